@@ -1,0 +1,56 @@
+//! Overflow-free rectangle clipping, shared by every target in the crate.
+
+use embedded_graphics_core::primitives::Rectangle;
+
+/// Half-open pixel bounds `x0..x1`, `y0..y1` of a rectangle, in `i64` so
+/// that any `Rectangle` (top-left near `i32::MAX`, size up to `u32::MAX`)
+/// is represented without overflow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Bounds {
+    pub x0: i64,
+    pub y0: i64,
+    pub x1: i64,
+    pub y1: i64,
+}
+
+impl Bounds {
+    /// The pixels of `r`; empty (`x0 == x1` or `y0 == y1`) for a zero size.
+    pub fn of(r: &Rectangle) -> Self {
+        let x0 = i64::from(r.top_left.x);
+        let y0 = i64::from(r.top_left.y);
+        Self {
+            x0,
+            y0,
+            x1: x0 + i64::from(r.size.width),
+            y1: y0 + i64::from(r.size.height),
+        }
+    }
+
+    /// The pixels in both `self` and `other`, or `None` if there are none.
+    pub fn intersect(self, other: Self) -> Option<Self> {
+        let b = Self {
+            x0: self.x0.max(other.x0),
+            y0: self.y0.max(other.y0),
+            x1: self.x1.min(other.x1),
+            y1: self.y1.min(other.y1),
+        };
+        (b.x0 < b.x1 && b.y0 < b.y1).then_some(b)
+    }
+}
+
+/// The part of `area` inside `bounds`, as pixel ranges relative to the
+/// top-left of `bounds`: `(x_range, y_range)`, both non-empty. `None` if
+/// nothing of `area` is inside.
+pub(crate) fn clip_to(
+    area: &Rectangle,
+    bounds: &Rectangle,
+) -> Option<(core::ops::Range<usize>, core::ops::Range<usize>)> {
+    let outer = Bounds::of(bounds);
+    let b = Bounds::of(area).intersect(outer)?;
+    // Both differences lie in 0..=u32::MAX because `b` is inside `outer`.
+    let rel = |v: i64, o: i64| usize::try_from(v - o).ok();
+    Some((
+        rel(b.x0, outer.x0)?..rel(b.x1, outer.x0)?,
+        rel(b.y0, outer.y0)?..rel(b.y1, outer.y0)?,
+    ))
+}

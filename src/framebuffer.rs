@@ -1,0 +1,1 @@
+//! Owned, const-sized framebuffers.
