@@ -423,3 +423,36 @@ fn inside<T: Step>(f: [T; 3]) -> bool {
 fn negative<T: Step>(f: [T; 3]) -> u8 {
     u8::from(f[0] < T::ZERO) | u8::from(f[1] < T::ZERO) << 1 | u8::from(f[2] < T::ZERO) << 2
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn setup(q: i64, a: i64, b: i64, width: i32, height: i32) -> Setup {
+        Setup {
+            origin_x: 0,
+            origin_y: 0,
+            width,
+            height,
+            a: [a, 0, 0],
+            b: [b, 0, 0],
+            q: [q, 0, 0],
+        }
+    }
+
+    #[test]
+    fn narrow_only_when_every_corner_fits() {
+        let max = i64::from(i32::MAX);
+        let min = i64::from(i32::MIN);
+        // F ranges over q + a * (0..w) + b * (0..h).
+        assert!(Stepper::<i32>::new(&setup(max - 10, 1, 1, 6, 6)).is_some());
+        assert!(Stepper::<i32>::new(&setup(max - 10, 1, 1, 6, 7)).is_none());
+        assert!(Stepper::<i32>::new(&setup(min + 10, -1, -1, 6, 6)).is_some());
+        assert!(Stepper::<i32>::new(&setup(min + 10, -1, -1, 7, 6)).is_none());
+        // Only the lowest corner leaves the range: still too wide.
+        assert!(Stepper::<i32>::new(&setup(0, -(1 << 30), 1, 4, 1)).is_none());
+        // Steps that do not fit, even when never taken.
+        assert!(Stepper::<i32>::new(&setup(0, max + 1, 0, 1, 1)).is_none());
+        assert!(Stepper::<i64>::new(&setup(min * 4, 1 << 40, 0, 5, 1)).is_some());
+    }
+}

@@ -1,0 +1,437 @@
+//! The triangle rasterizer against the exact reference in `common`.
+//!
+//! Case counts follow `PROPTEST_CASES` (proptest's default, 256, when
+//! unset); CI's deep run raises it.
+
+mod common;
+
+use common::{add_spans, assert_exact, reference_polygon, Grid};
+use embedded_graphics_core::{
+    geometry::{Point, Size},
+    pixelcolor::Rgb565,
+    prelude::*,
+    primitives::Rectangle,
+};
+use embedded_raster::{StepWidth, Triangle, Vertex};
+use proptest::prelude::*;
+
+const MIN: i64 = i32::MIN as i64;
+const MAX: i64 = i32::MAX as i64;
+
+fn v(x: i64, y: i64) -> Vertex {
+    Vertex::from_raw(x.clamp(MIN, MAX) as i32, y.clamp(MIN, MAX) as i32)
+}
+
+/// Pixel containing the raw point `p` (floor division by 4096).
+fn pixel_of(p: i64) -> i64 {
+    p >> 12
+}
+
+/// A window of `w x h` pixels centred on the raw point `(cx, cy)`.
+fn window_around(cx: i64, cy: i64, w: usize, h: usize) -> (i64, i64, usize, usize) {
+    (pixel_of(cx) - w as i64 / 2, pixel_of(cy) - h as i64 / 2, w, h)
+}
+
+/// Picks a window centre: one of the vertices, or a point of the bounding
+/// box given by two fractions.
+fn focus(t: &Triangle, which: usize, fx: u16, fy: u16) -> (i64, i64) {
+    let r = t.vertices.map(|v| {
+        let (x, y) = v.raw();
+        (i64::from(x), i64::from(y))
+    });
+    if which < 3 {
+        return r[which];
+    }
+    let (min_x, max_x) = (r.iter().map(|p| p.0).min().unwrap(), r.iter().map(|p| p.0).max().unwrap());
+    let (min_y, max_y) = (r.iter().map(|p| p.1).min().unwrap(), r.iter().map(|p| p.1).max().unwrap());
+    let lerp = |a: i64, b: i64, f: u16| a + ((b - a) as i128 * i128::from(f) / 65535) as i64;
+    (lerp(min_x, max_x, fx), lerp(min_y, max_y, fy))
+}
+
+/// Half-extents in raw units, from a 4 px triangle to the whole range.
+const SCALES: [i64; 6] = [1 << 13, 1 << 15, 1 << 18, 1 << 22, 1 << 27, 1 << 32];
+
+prop_compose! {
+    /// Triangles at every scale, anywhere in the range.
+    fn any_scale()(
+        scale in 0..SCALES.len(),
+        c in (any::<i32>(), any::<i32>()),
+        d in prop::array::uniform6(any::<i64>()),
+    ) -> Triangle {
+        let r = SCALES[scale];
+        let (cx, cy) = if scale == SCALES.len() - 1 { (0, 0) } else { (i64::from(c.0), i64::from(c.1)) };
+        let off = |k: usize| d[k].rem_euclid(2 * r + 1) - r;
+        Triangle::new(v(cx + off(0), cy + off(1)), v(cx + off(2), cy + off(3)), v(cx + off(4), cy + off(5)))
+    }
+}
+
+prop_compose! {
+    /// Vertices on pixel centres and corners (multiples of half a pixel):
+    /// many pixel centres lie exactly on edges and vertices.
+    fn on_grid()(c in prop::array::uniform6(-24i64..=24)) -> Triangle {
+        Triangle::new(v(c[0] * 2048, c[1] * 2048), v(c[2] * 2048, c[3] * 2048), v(c[4] * 2048, c[5] * 2048))
+    }
+}
+
+prop_compose! {
+    /// Slivers: the third vertex close to the line through the first two
+    /// (down to one raw unit off it, or exactly on it).
+    fn sliver()(
+        p0 in (-(1i64 << 22)..(1 << 22), -(1i64 << 22)..(1 << 22)),
+        d in (-(1i64 << 20)..(1 << 20), -(1i64 << 20)..(1 << 20)),
+        t in -2048i64..=6144,
+        off in (-3000i64..=3000, -3000i64..=3000),
+        tiny in any::<bool>(),
+    ) -> Triangle {
+        let (ox, oy) = if tiny { (off.0.signum(), off.1.signum()) } else { off };
+        Triangle::new(
+            v(p0.0, p0.1),
+            v(p0.0 + d.0, p0.1 + d.1),
+            v(p0.0 + d.0 * t / 4096 + ox, p0.1 + d.1 * t / 4096 + oy),
+        )
+    }
+}
+
+prop_compose! {
+    /// Vertices at and next to the ends of the range.
+    fn extreme()(k in prop::array::uniform6(0usize..7)) -> Triangle {
+        const E: [i64; 7] = [MIN, MIN + 1, -1, 0, 1, MAX - 1, MAX];
+        Triangle::new(v(E[k[0]], E[k[1]]), v(E[k[2]], E[k[3]]), v(E[k[4]], E[k[5]]))
+    }
+}
+
+proptest! {
+    #[test]
+    fn exact_at_every_scale(t in any_scale(), which in 0usize..4, f in (any::<u16>(), any::<u16>()), w in 1usize..48, h in 1usize..48) {
+        let (cx, cy) = focus(&t, which, f.0, f.1);
+        let (x0, y0, w, h) = window_around(cx, cy, w, h);
+        assert_exact(&t, x0, y0, w, h);
+    }
+
+    #[test]
+    fn exact_on_pixel_centres_and_corners(t in on_grid()) {
+        // The window holds the whole triangle and a margin.
+        assert_exact(&t, -14, -14, 28, 28);
+    }
+
+    #[test]
+    fn exact_for_slivers(t in sliver(), which in 0usize..4, f in (any::<u16>(), any::<u16>())) {
+        let (cx, cy) = focus(&t, which, f.0, f.1);
+        let (x0, y0, w, h) = window_around(cx, cy, 40, 40);
+        assert_exact(&t, x0, y0, w, h);
+    }
+
+    #[test]
+    fn exact_far_off_screen(t in any_scale(), w in 1usize..64, h in 1usize..64) {
+        // A screen-like window at the origin, wherever the triangle is.
+        assert_exact(&t, 0, 0, w, h);
+    }
+
+    #[test]
+    fn exact_at_the_ends_of_the_range(t in extreme(), corner in 0usize..5) {
+        const LO: i64 = -(1 << 19);
+        const HI: i64 = (1 << 19) - 16;
+        let (x0, y0) = [(LO, LO), (HI, LO), (LO, HI), (HI, HI), (-8, -8)][corner];
+        assert_exact(&t, x0, y0, 16, 16);
+    }
+
+    /// Both windings light the same pixels.
+    #[test]
+    fn winding_does_not_matter(t in on_grid()) {
+        let [a, b, c] = t.vertices;
+        let g1 = common::rasterized(&t, -14, -14, 28, 28);
+        let g2 = common::rasterized(&Triangle::new(a, c, b), -14, -14, 28, 28);
+        prop_assert_eq!(g1, g2);
+    }
+
+    /// The 32-bit bound in the docs: bounding box sides under 524288 px and
+    /// at most 524287 px^2 always step in 32 bits, whatever the clip.
+    #[test]
+    fn small_boxes_step_in_32_bits(
+        c in (any::<i32>(), any::<i32>()),
+        wh in (1i64..(1 << 31), 1i64..(1 << 31)),
+        d in prop::array::uniform4(any::<u32>()),
+        corner in prop::array::uniform2(any::<bool>()),
+        clip in (any::<i32>(), any::<i32>(), any::<u32>(), any::<u32>()),
+    ) {
+        // Shrink the height until the box is at most 524287 px^2.
+        let (bw, mut bh) = wh;
+        while (bw as i128) * (bh as i128) > 524_287i128 << 24 {
+            bh /= 2;
+        }
+        let (x0, y0) = (i64::from(c.0).min(MAX - bw), i64::from(c.1).min(MAX - bh));
+        // Two vertices on opposite corners, one anywhere in the box.
+        let a = v(x0 + if corner[0] { bw } else { 0 }, y0 + if corner[1] { bh } else { 0 });
+        let b = v(x0 + if corner[0] { 0 } else { bw }, y0 + if corner[1] { 0 } else { bh });
+        let p = v(x0 + i64::from(d[0]) % (bw + 1), y0 + i64::from(d[1]) % (bh + 1));
+        let t = Triangle::new(a, b, p);
+        let clips = [
+            Rectangle::new(Point::new(i32::MIN, i32::MIN), Size::new(u32::MAX, u32::MAX)),
+            Rectangle::new(Point::new(clip.0, clip.1), Size::new(clip.2, clip.3)),
+        ];
+        for clip in clips {
+            let w = t.step_width(&clip);
+            prop_assert!(w.is_none() || w == Some(StepWidth::Bits32), "{:?}: {:?}", t, w);
+        }
+    }
+}
+
+#[test]
+fn right_triangle_by_hand() {
+    // Legs of 4 px on pixel corners: centres (i + 1/2, j + 1/2) with
+    // i + j + 1 < 4 are inside; those on the hypotenuse (i + j + 1 == 4)
+    // are on a right/bottom edge and stay dark.
+    let t = Triangle::new(v(0, 0), v(4 << 12, 0), v(0, 4 << 12));
+    let g = common::rasterized(&t, -2, -2, 8, 8);
+    for j in -2..6i64 {
+        for i in -2..6i64 {
+            let lit = i >= 0 && j >= 0 && i + j < 3;
+            assert_eq!(g.get(i, j), u32::from(lit), "pixel ({i}, {j})");
+        }
+    }
+}
+
+#[test]
+fn top_left_rule_on_pixel_centres() {
+    // A triangle with corners on pixel centres: its top and left edges run
+    // through centres, which are lit; its bottom and right edges too, unlit.
+    // Square (1.5, 1.5)-(5.5, 5.5) split along the other diagonal.
+    let c = |i: i64, j: i64| v(i * 4096 + 2048, j * 4096 + 2048);
+    let upper = Triangle::new(c(1, 1), c(5, 1), c(1, 5));
+    let lower = Triangle::new(c(5, 1), c(5, 5), c(1, 5));
+    let gu = common::rasterized(&upper, 0, 0, 8, 8);
+    let gl = common::rasterized(&lower, 0, 0, 8, 8);
+    for j in 0..8i64 {
+        for i in 0..8i64 {
+            // The square's top and left sides are in, bottom and right out;
+            // the shared diagonal belongs to exactly one of the two.
+            let in_square = (1..5).contains(&i) && (1..5).contains(&j);
+            assert_eq!(gu.get(i, j) + gl.get(i, j), u32::from(in_square), "pixel ({i}, {j})");
+        }
+    }
+    // Centre (1.5, 1.5), the upper triangle's top-left corner, is lit.
+    assert_eq!(gu.get(1, 1), 1);
+    // The diagonal x + y = 7 runs from (5.5, 1.5) to (1.5, 5.5) through the
+    // centre (3.5, 3.5): the bottom-right edge of the upper triangle, the
+    // top-left edge of the lower one.
+    assert_eq!((gu.get(3, 3), gl.get(3, 3)), (0, 1));
+    assert_eq!((gu.get(3, 2), gl.get(3, 2)), (1, 0));
+}
+
+#[test]
+fn zero_area_lights_nothing() {
+    let cases = [
+        Triangle::new(v(0, 0), v(40960, 40960), v(20480, 20480)),
+        Triangle::new(v(2048, 2048), v(2048, 2048), v(2048, 2048)),
+        Triangle::new(v(0, 2048), v(40960, 2048), v(8192, 2048)),
+        Triangle::new(v(MIN, MIN), v(MAX, MAX), v(0, 0)),
+    ];
+    for t in cases {
+        assert_eq!(t.step_width(&Grid::new(-16, -16, 32, 32).clip()), None);
+        let g = common::rasterized(&t, -16, -16, 32, 32);
+        assert!(g.cells.iter().all(|&c| c == 0), "{t:?} lit something");
+    }
+}
+
+#[test]
+fn widest_triangles_step_in_64_bits_and_are_exact() {
+    let t = Triangle::new(v(MIN, MIN), v(MAX, MIN + 5), v(3, MAX));
+    let everywhere = Rectangle::new(Point::new(-(1 << 19), -(1 << 19)), Size::new(1 << 20, 1 << 20));
+    assert_eq!(t.step_width(&everywhere), Some(StepWidth::Bits64));
+    for (x0, y0) in [(0, 0), (-(1 << 19), -(1 << 19)), ((1 << 19) - 20, -(1 << 19)), (-2, (1 << 19) - 20)] {
+        assert_exact(&t, x0, y0, 20, 20);
+    }
+}
+
+#[test]
+fn a_screen_sized_triangle_steps_in_32_bits() {
+    let t = Triangle::from_points(Point::new(0, 0), Point::new(719, 5), Point::new(30, 719)).unwrap();
+    let clip = Rectangle::new(Point::zero(), Size::new(720, 720));
+    assert_eq!(t.step_width(&clip), Some(StepWidth::Bits32));
+    // 1024 x 1024 no longer fits in 32 bits as a whole ...
+    let big = Triangle::from_points(Point::new(0, 0), Point::new(1023, 0), Point::new(0, 1023)).unwrap();
+    let screen = Rectangle::new(Point::zero(), Size::new(1024, 1024));
+    assert_eq!(big.step_width(&screen), Some(StepWidth::Bits64));
+    // ... and both widths draw it exactly.
+    assert_exact(&big, 500, 500, 40, 40);
+}
+
+#[test]
+fn clip_rectangles_at_the_ends_of_i32() {
+    let t = Triangle::new(v(MIN, MIN), v(MAX, MIN), v(0, MAX));
+    let clips = [
+        Rectangle::new(Point::new(i32::MAX, i32::MAX), Size::new(u32::MAX, u32::MAX)),
+        Rectangle::new(Point::new(i32::MIN, i32::MIN), Size::new(u32::MAX, 3)),
+        Rectangle::new(Point::new(i32::MAX - 1, 0), Size::new(2, 2)),
+        Rectangle::new(Point::new(0, 0), Size::new(0, 10)),
+    ];
+    for clip in clips {
+        let mut pixels = 0u64;
+        t.for_each_span(&clip, |s| {
+            assert!(s.y >= clip.top_left.y && s.x_start >= clip.top_left.x);
+            pixels += u64::from(s.len());
+            Ok::<(), ()>(())
+        })
+        .unwrap();
+        // The triangle covers the first clip's corner at (i32::MIN, i32::MIN)
+        // only with rows -524288..; only the second clip reaches it.
+        assert!(pixels <= 3 * (1 << 20), "{clip:?}: {pixels}");
+    }
+}
+
+#[test]
+fn stops_at_the_first_error() {
+    let t = Triangle::new(v(0, 0), v(40960, 0), v(0, 40960));
+    let mut calls = 0;
+    let r = t.for_each_span(&Grid::new(0, 0, 10, 10).clip(), |_| {
+        calls += 1;
+        if calls == 3 {
+            Err("full")
+        } else {
+            Ok(())
+        }
+    });
+    assert_eq!((r, calls), (Err("full"), 3));
+}
+
+prop_compose! {
+    /// A rectangle split into a jittered grid of cells, two triangles each:
+    /// (corner, raw cell size, vertices, cells, diagonal per cell).
+    fn mesh()(
+        nx in 1usize..6, ny in 1usize..6,
+        corner in (-(1i64 << 16)..(1 << 16), -(1i64 << 16)..(1 << 16)),
+        cell in (4096i64..(24 << 12), 4096i64..(24 << 12)),
+        jitter in prop::collection::vec((-20i64..=20, -20i64..=20), 36),
+        diagonals in prop::collection::vec(any::<bool>(), 25),
+    ) -> (Vec<Triangle>, (i64, i64, i64, i64)) {
+        let point = |i: usize, j: usize| {
+            let (mut x, mut y) = (corner.0 + i as i64 * cell.0, corner.1 + j as i64 * cell.1);
+            let (jx, jy) = jitter[j * 6 + i];
+            // Boundary vertices slide along the boundary only.
+            if i > 0 && i < nx { x += cell.0 * jx / 100; }
+            if j > 0 && j < ny { y += cell.1 * jy / 100; }
+            v(x, y)
+        };
+        let mut tris = vec![];
+        for j in 0..ny {
+            for i in 0..nx {
+                let (a, b, c, d) = (point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1));
+                if diagonals[j * 5 + i] {
+                    tris.push(Triangle::new(a, b, c));
+                    tris.push(Triangle::new(a, c, d));
+                } else {
+                    tris.push(Triangle::new(a, b, d));
+                    tris.push(Triangle::new(b, c, d));
+                }
+            }
+        }
+        let bounds = (corner.0, corner.1, corner.0 + nx as i64 * cell.0, corner.1 + ny as i64 * cell.1);
+        (tris, bounds)
+    }
+}
+
+prop_compose! {
+    /// A fan around a centre: a star-shaped polygon and its triangles.
+    fn fan()(
+        n in 4usize..12,
+        centre in (-(1i64 << 16)..(1 << 16), -(1i64 << 16)..(1 << 16)),
+        radius in (2i64 << 12)..(40i64 << 12),
+        jitter in prop::collection::vec((-40i32..=40, 50i32..=100), 12),
+        snap in any::<bool>(),
+    ) -> (Vec<Triangle>, Vec<Vertex>) {
+        // Snapped fans put every vertex on a half-pixel grid: many ties.
+        let snap_to = |p: i64| if snap { (p + 1024).div_euclid(2048) * 2048 } else { p };
+        let c = v(snap_to(centre.0), snap_to(centre.1));
+        let ring: Vec<Vertex> = (0..n)
+            .map(|k| {
+                let step = std::f64::consts::TAU / n as f64;
+                let angle = step * (k as f64 + f64::from(jitter[k].0) / 100.0);
+                let r = radius as f64 * f64::from(jitter[k].1) / 100.0;
+                v(snap_to(centre.0 + (r * angle.cos()) as i64), snap_to(centre.1 + (r * angle.sin()) as i64))
+            })
+            .collect();
+        let tris = (0..n).map(|k| Triangle::new(c, ring[k], ring[(k + 1) % n])).collect();
+        (tris, ring)
+    }
+}
+
+proptest! {
+    /// Every pixel of a jittered grid mesh is written exactly once, and
+    /// exactly the pixels whose centres are in the outer rectangle.
+    #[test]
+    fn meshes_have_no_gaps_and_no_overdraw((tris, (x0, y0, x1, y1)) in mesh()) {
+        let mut g = Grid::new((x0 >> 12) - 2, (y0 >> 12) - 2, ((x1 - x0) >> 12) as usize + 5, ((y1 - y0) >> 12) as usize + 5);
+        for t in &tris {
+            add_spans(t, &mut g);
+        }
+        for j in 0..g.h as i64 {
+            for i in 0..g.w as i64 {
+                let (px, py) = ((g.x0 + i) * 4096 + 2048, (g.y0 + j) * 4096 + 2048);
+                // Nudged by (e, e^2): a centre on the left or top side is in.
+                let inside = x0 <= px && px < x1 && y0 <= py && py < y1;
+                prop_assert_eq!(g.get(g.x0 + i, g.y0 + j), u32::from(inside), "pixel ({}, {})", g.x0 + i, g.y0 + j);
+            }
+        }
+    }
+
+    /// A fan lights each pixel of its outline exactly once.
+    #[test]
+    fn fans_have_no_gaps_and_no_overdraw((tris, ring) in fan()) {
+        let (cx, cy) = tris[0].vertices[0].raw();
+        let (x0, y0) = ((i64::from(cx) >> 12) - 44, (i64::from(cy) >> 12) - 44);
+        let mut g = Grid::new(x0, y0, 88, 88);
+        for t in &tris {
+            add_spans(t, &mut g);
+        }
+        let want = reference_polygon(&ring, x0, y0, 88, 88);
+        let d = g.diff(&want);
+        prop_assert!(d.is_empty(), "{} pixels differ: {:?}", d.len(), &d[..d.len().min(8)]);
+    }
+}
+
+/// A display that accepts only `fill_solid`, to prove flat fills never go
+/// pixel by pixel.
+struct SpansOnly {
+    fills: usize,
+}
+
+impl OriginDimensions for SpansOnly {
+    fn size(&self) -> Size {
+        Size::new(64, 64)
+    }
+}
+
+impl DrawTarget for SpansOnly {
+    type Color = Rgb565;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(&mut self, _: I) -> Result<(), Self::Error> {
+        panic!("a flat triangle was drawn pixel by pixel");
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(&mut self, _: &Rectangle, _: I) -> Result<(), Self::Error> {
+        panic!("a flat triangle was drawn through fill_contiguous");
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, _: Rgb565) -> Result<(), Self::Error> {
+        assert_eq!(area.size.height, 1);
+        assert!(area.size.width > 0);
+        assert!(self.bounding_box().contains(area.top_left));
+        assert!(self.bounding_box().contains(area.top_left + Point::new(area.size.width as i32 - 1, 0)));
+        self.fills += 1;
+        Ok(())
+    }
+}
+
+#[test]
+fn drawable_sends_one_clipped_fill_solid_per_row() {
+    let mut d = SpansOnly { fills: 0 };
+    // Reaches far outside the 64 x 64 target on three sides.
+    let t = Triangle::from_points(Point::new(-100, 10), Point::new(300, 20), Point::new(30, 500)).unwrap();
+    t.fill(Rgb565::GREEN).draw(&mut d).unwrap();
+    // The top edge runs from centre (-99.5, 10.5) to (300.5, 20.5): at the
+    // first column's centre x = 0.5 it is at y = 13.0, so rows 13..=63 of
+    // the target have pixels, one span each.
+    assert_eq!(d.fills, 64 - 13);
+}
+
