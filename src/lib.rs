@@ -33,9 +33,10 @@
 //! from numbers, strings and [`Point`]s are checked and report
 //! [`CoordinateOutOfRange`]. Any triangle of in-range vertices is
 //! rasterized exactly, on any clip rectangle. Per triangle, the edge
-//! functions step in 32 bits when the visible part allows (always when the
-//! bounding box covers at most 524287 px², e.g. 724 x 724) and in 64 bits
-//! otherwise; see [`StepWidth`].
+//! functions step in 32 bits when the values over the visible part fit
+//! (always when the bounding box has both sides under 524288 px and covers
+//! at most 524287 px², e.g. 724 x 724) and in 64 bits otherwise; see
+//! [`StepWidth`].
 //!
 //! # No panics
 //!

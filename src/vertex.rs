@@ -205,13 +205,42 @@ impl core::fmt::Display for ParseCoordinateError {
 impl core::error::Error for ParseCoordinateError {}
 
 fn parse_coordinate(s: &str) -> Result<I20F12, ParseCoordinateError> {
-    let digits = s.strip_prefix(['-', '+']).unwrap_or(s);
+    let (negative, digits) = match s.as_bytes().first() {
+        Some(b'-') => (true, &s[1..]),
+        Some(b'+') => (false, &s[1..]),
+        _ => (false, s),
+    };
     let (int, frac) = digits.split_once('.').unwrap_or((digits, ""));
     let all_digits = |t: &str| t.bytes().all(|b| b.is_ascii_digit());
     if int.is_empty() && frac.is_empty() || !all_digits(int) || !all_digits(frac) {
         return Err(ParseCoordinateError::Invalid);
     }
-    // `fixed` parses decimals exactly, rounding once to nearest, ties to even;
-    // the only failure left after the syntax check above is overflow.
-    I20F12::from_str(s).map_err(|_| ParseCoordinateError::OutOfRange)
+    // Integer part, saturating far above the range (2^20 px).
+    let whole = int.bytes().fold(0i64, |acc, d| {
+        (acc * 10 + i64::from(d - b'0')).min(1 << 40)
+    });
+    let magnitude = whole * ONE + round_fraction(frac);
+    let raw = if negative { -magnitude } else { magnitude };
+    i32::try_from(raw)
+        .map(I20F12::from_bits)
+        .map_err(|_| ParseCoordinateError::OutOfRange)
+}
+
+/// Rounds the decimal fraction `0.ddd...` to the nearest multiple of 1/4096,
+/// ties to even, exactly: returns the numerator (0..=4096).
+///
+/// Multiplying the digit string by 8192 from its last digit up gives
+/// `floor(f * 8192)` (the number of half-steps) as the final carry, and the
+/// digits left behind say whether anything remains below it.
+fn round_fraction(frac: &str) -> i64 {
+    let mut carry = 0u32;
+    let mut rest_nonzero = false;
+    for d in frac.bytes().rev() {
+        let t = u32::from(d - b'0') * 8192 + carry;
+        rest_nonzero |= t % 10 != 0;
+        carry = t / 10;
+    }
+    let (steps, half) = (i64::from(carry >> 1), carry & 1 == 1);
+    let round_up = half && (rest_nonzero || steps % 2 == 1);
+    steps + i64::from(round_up)
 }

@@ -44,10 +44,12 @@
 //! `F_k` is linear, so over the scanned rectangle its extremes lie at the
 //! corners. The per-pixel loop runs in `i32` when those extremes and the
 //! steps `A_k`, `B_k` all fit in `i32`, which is checked exactly at setup.
-//! Since `|F_k| <= 4096 * W * H` for a bounding box of `W x H` px, every
-//! triangle whose bounding box covers at most 524287 px^2 (724 x 724,
-//! 1024 x 511, ...) steps in 32 bits; larger ones do when their visible part
-//! allows, else in 64 bits.
+//! Since `|F_k| <= 4096 * W * H + 1` for a bounding box of `W x H` px (twice
+//! the area of a triangle inside the box) and `|A_k| <= 4096 H`,
+//! `|B_k| <= 4096 W`, every triangle whose bounding box has both sides
+//! shorter than 524288 px and covers at most 524287 px^2 (724 x 724,
+//! 1024 x 511, 4096 x 127, ...) steps in 32 bits, whatever the clip; larger
+//! ones do when the values over their visible part fit, else in 64 bits.
 //!
 //! # Traversal
 //!
