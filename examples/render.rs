@@ -1,1 +1,19 @@
-fn main(){}
+//! Renders a scene file to a PNG image.
+//!
+//! ```text
+//! cargo run --release --features sim --example render -- SCENE -o OUT.png [--counts COUNTS.pgm] [--stats]
+//! ```
+//!
+//! The scene format is described in `embedded_raster::sim`; run with
+//! `--help` for the options.
+
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    let code = embedded_raster::sim::cli::run(
+        std::env::args_os().skip(1),
+        std::io::stdout().lock(),
+        std::io::stderr().lock(),
+    );
+    ExitCode::from(u8::try_from(code).unwrap_or(1))
+}

@@ -54,3 +54,20 @@ pub(crate) fn clip_to(
         rel(b.y0, outer.y0)?..rel(b.y1, outer.y0)?,
     ))
 }
+
+/// Where the part of `area` inside `bounds` lies among `area`'s pixels in
+/// row-major order: `(skip, gap)`, the number of `area`'s pixels before
+/// the first one inside, and between the last one inside on a row and the
+/// first one inside on the next. `None` if nothing of `area` is inside.
+pub(crate) fn row_major_skips(area: &Rectangle, bounds: &Rectangle) -> Option<(u64, u64)> {
+    let a = Bounds::of(area);
+    let b = a.intersect(Bounds::of(bounds))?;
+    // Each difference lies in 0..=u32::MAX because `b` is inside `a`, so
+    // `skip` is at most (2^32 - 1) * (2^32 - 1) + 2^32 - 1 < 2^64.
+    let diff = |v: i64, o: i64| u64::try_from(v - o).ok();
+    let width = u64::from(area.size.width);
+    let skip = diff(b.y0, a.y0)?
+        .checked_mul(width)?
+        .checked_add(diff(b.x0, a.x0)?)?;
+    Some((skip, width.checked_sub(diff(b.x1, b.x0)?)?))
+}

@@ -71,7 +71,7 @@ mod vertex;
 
 pub use error::CoordinateOutOfRange;
 pub use fixed::types::I20F12;
-// pub use framebuffer::Framebuffer;
+pub use framebuffer::Framebuffer;
 pub use span::Span;
 pub use triangle::{FilledTriangle, StepWidth, Triangle};
 pub use vertex::{ParseCoordinateError, Vertex, SUBPIXEL_BITS};

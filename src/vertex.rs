@@ -216,9 +216,9 @@ fn parse_coordinate(s: &str) -> Result<I20F12, ParseCoordinateError> {
         return Err(ParseCoordinateError::Invalid);
     }
     // Integer part, saturating far above the range (2^20 px).
-    let whole = int.bytes().fold(0i64, |acc, d| {
-        (acc * 10 + i64::from(d - b'0')).min(1 << 40)
-    });
+    let whole = int
+        .bytes()
+        .fold(0i64, |acc, d| (acc * 10 + i64::from(d - b'0')).min(1 << 40));
     let magnitude = whole * ONE + round_fraction(frac);
     let raw = if negative { -magnitude } else { magnitude };
     i32::try_from(raw)
@@ -237,7 +237,7 @@ fn round_fraction(frac: &str) -> i64 {
     let mut rest_nonzero = false;
     for d in frac.bytes().rev() {
         let t = u32::from(d - b'0') * 8192 + carry;
-        rest_nonzero |= t % 10 != 0;
+        rest_nonzero |= !t.is_multiple_of(10);
         carry = t / 10;
     }
     let (steps, half) = (i64::from(carry >> 1), carry & 1 == 1);

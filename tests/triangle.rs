@@ -29,7 +29,12 @@ fn pixel_of(p: i64) -> i64 {
 
 /// A window of `w x h` pixels centred on the raw point `(cx, cy)`.
 fn window_around(cx: i64, cy: i64, w: usize, h: usize) -> (i64, i64, usize, usize) {
-    (pixel_of(cx) - w as i64 / 2, pixel_of(cy) - h as i64 / 2, w, h)
+    (
+        pixel_of(cx) - w as i64 / 2,
+        pixel_of(cy) - h as i64 / 2,
+        w,
+        h,
+    )
 }
 
 /// Picks a window centre: one of the vertices, or a point of the bounding
@@ -42,8 +47,14 @@ fn focus(t: &Triangle, which: usize, fx: u16, fy: u16) -> (i64, i64) {
     if which < 3 {
         return r[which];
     }
-    let (min_x, max_x) = (r.iter().map(|p| p.0).min().unwrap(), r.iter().map(|p| p.0).max().unwrap());
-    let (min_y, max_y) = (r.iter().map(|p| p.1).min().unwrap(), r.iter().map(|p| p.1).max().unwrap());
+    let (min_x, max_x) = (
+        r.iter().map(|p| p.0).min().unwrap(),
+        r.iter().map(|p| p.0).max().unwrap(),
+    );
+    let (min_y, max_y) = (
+        r.iter().map(|p| p.1).min().unwrap(),
+        r.iter().map(|p| p.1).max().unwrap(),
+    );
     let lerp = |a: i64, b: i64, f: u16| a + ((b - a) as i128 * i128::from(f) / 65535) as i64;
     (lerp(min_x, max_x, fx), lerp(min_y, max_y, fy))
 }
@@ -206,7 +217,11 @@ fn top_left_rule_on_pixel_centres() {
             // The square's top and left sides are in, bottom and right out;
             // the shared diagonal belongs to exactly one of the two.
             let in_square = (1..5).contains(&i) && (1..5).contains(&j);
-            assert_eq!(gu.get(i, j) + gl.get(i, j), u32::from(in_square), "pixel ({i}, {j})");
+            assert_eq!(
+                gu.get(i, j) + gl.get(i, j),
+                u32::from(in_square),
+                "pixel ({i}, {j})"
+            );
         }
     }
     // Centre (1.5, 1.5), the upper triangle's top-left corner, is lit.
@@ -236,20 +251,30 @@ fn zero_area_lights_nothing() {
 #[test]
 fn widest_triangles_step_in_64_bits_and_are_exact() {
     let t = Triangle::new(v(MIN, MIN), v(MAX, MIN + 5), v(3, MAX));
-    let everywhere = Rectangle::new(Point::new(-(1 << 19), -(1 << 19)), Size::new(1 << 20, 1 << 20));
+    let everywhere = Rectangle::new(
+        Point::new(-(1 << 19), -(1 << 19)),
+        Size::new(1 << 20, 1 << 20),
+    );
     assert_eq!(t.step_width(&everywhere), Some(StepWidth::Bits64));
-    for (x0, y0) in [(0, 0), (-(1 << 19), -(1 << 19)), ((1 << 19) - 20, -(1 << 19)), (-2, (1 << 19) - 20)] {
+    for (x0, y0) in [
+        (0, 0),
+        (-(1 << 19), -(1 << 19)),
+        ((1 << 19) - 20, -(1 << 19)),
+        (-2, (1 << 19) - 20),
+    ] {
         assert_exact(&t, x0, y0, 20, 20);
     }
 }
 
 #[test]
 fn a_screen_sized_triangle_steps_in_32_bits() {
-    let t = Triangle::from_points(Point::new(0, 0), Point::new(719, 5), Point::new(30, 719)).unwrap();
+    let t =
+        Triangle::from_points(Point::new(0, 0), Point::new(719, 5), Point::new(30, 719)).unwrap();
     let clip = Rectangle::new(Point::zero(), Size::new(720, 720));
     assert_eq!(t.step_width(&clip), Some(StepWidth::Bits32));
     // 1024 x 1024 no longer fits in 32 bits as a whole ...
-    let big = Triangle::from_points(Point::new(0, 0), Point::new(1023, 0), Point::new(0, 1023)).unwrap();
+    let big =
+        Triangle::from_points(Point::new(0, 0), Point::new(1023, 0), Point::new(0, 1023)).unwrap();
     let screen = Rectangle::new(Point::zero(), Size::new(1024, 1024));
     assert_eq!(big.step_width(&screen), Some(StepWidth::Bits64));
     // ... and both widths draw it exactly.
@@ -260,7 +285,10 @@ fn a_screen_sized_triangle_steps_in_32_bits() {
 fn clip_rectangles_at_the_ends_of_i32() {
     let t = Triangle::new(v(MIN, MIN), v(MAX, MIN), v(0, MAX));
     let clips = [
-        Rectangle::new(Point::new(i32::MAX, i32::MAX), Size::new(u32::MAX, u32::MAX)),
+        Rectangle::new(
+            Point::new(i32::MAX, i32::MAX),
+            Size::new(u32::MAX, u32::MAX),
+        ),
         Rectangle::new(Point::new(i32::MIN, i32::MIN), Size::new(u32::MAX, 3)),
         Rectangle::new(Point::new(i32::MAX - 1, 0), Size::new(2, 2)),
         Rectangle::new(Point::new(0, 0), Size::new(0, 10)),
@@ -405,11 +433,18 @@ impl DrawTarget for SpansOnly {
     type Color = Rgb565;
     type Error = core::convert::Infallible;
 
-    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(&mut self, _: I) -> Result<(), Self::Error> {
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+        &mut self,
+        _: I,
+    ) -> Result<(), Self::Error> {
         panic!("a flat triangle was drawn pixel by pixel");
     }
 
-    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(&mut self, _: &Rectangle, _: I) -> Result<(), Self::Error> {
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
+        &mut self,
+        _: &Rectangle,
+        _: I,
+    ) -> Result<(), Self::Error> {
         panic!("a flat triangle was drawn through fill_contiguous");
     }
 
@@ -417,7 +452,9 @@ impl DrawTarget for SpansOnly {
         assert_eq!(area.size.height, 1);
         assert!(area.size.width > 0);
         assert!(self.bounding_box().contains(area.top_left));
-        assert!(self.bounding_box().contains(area.top_left + Point::new(area.size.width as i32 - 1, 0)));
+        assert!(self
+            .bounding_box()
+            .contains(area.top_left + Point::new(area.size.width as i32 - 1, 0)));
         self.fills += 1;
         Ok(())
     }
@@ -427,11 +464,15 @@ impl DrawTarget for SpansOnly {
 fn drawable_sends_one_clipped_fill_solid_per_row() {
     let mut d = SpansOnly { fills: 0 };
     // Reaches far outside the 64 x 64 target on three sides.
-    let t = Triangle::from_points(Point::new(-100, 10), Point::new(300, 20), Point::new(30, 500)).unwrap();
+    let t = Triangle::from_points(
+        Point::new(-100, 10),
+        Point::new(300, 20),
+        Point::new(30, 500),
+    )
+    .unwrap();
     t.fill(Rgb565::GREEN).draw(&mut d).unwrap();
     // The top edge runs from centre (-99.5, 10.5) to (300.5, 20.5): at the
     // first column's centre x = 0.5 it is at y = 13.0, so rows 13..=63 of
     // the target have pixels, one span each.
     assert_eq!(d.fills, 64 - 13);
 }
-

@@ -10,8 +10,16 @@ fn reference_raw(negative: bool, int: u64, frac: &str) -> Option<i32> {
     let den = 10u128.pow(frac.len() as u32);
     let num = (u128::from(int) * den + frac.parse::<u128>().unwrap_or(0)) * 4096;
     let (q, r) = (num / den, num % den);
-    let rounded = if 2 * r > den || (2 * r == den && q % 2 == 1) { q + 1 } else { q };
-    let signed = if negative { -(rounded as i128) } else { rounded as i128 };
+    let rounded = if 2 * r > den || (2 * r == den && q % 2 == 1) {
+        q + 1
+    } else {
+        q
+    };
+    let signed = if negative {
+        -(rounded as i128)
+    } else {
+        rounded as i128
+    };
     i32::try_from(signed).ok()
 }
 
@@ -79,29 +87,62 @@ proptest! {
 
 #[test]
 fn range_ends() {
-    assert_eq!(Vertex::parse("-524288", "524287.999755859375").unwrap().raw(), (i32::MIN, i32::MAX));
+    assert_eq!(
+        Vertex::parse("-524288", "524287.999755859375")
+            .unwrap()
+            .raw(),
+        (i32::MIN, i32::MAX)
+    );
     // Rounds up past the last representable value.
-    assert_eq!(Vertex::parse("524287.99987793", "0"), Err(ParseCoordinateError::OutOfRange));
+    assert_eq!(
+        Vertex::parse("524287.99987793", "0"),
+        Err(ParseCoordinateError::OutOfRange)
+    );
     // Rounds down onto it.
-    assert_eq!(Vertex::parse("524287.9998779", "0").unwrap().raw().0, i32::MAX);
+    assert_eq!(
+        Vertex::parse("524287.9998779", "0").unwrap().raw().0,
+        i32::MAX
+    );
     // 0.41 of a step below the end rounds onto it; 0.504 of a step does not.
-    assert_eq!(Vertex::parse("-524288.0001", "0").unwrap().raw().0, i32::MIN);
-    assert_eq!(Vertex::parse("-524288.000123", "0"), Err(ParseCoordinateError::OutOfRange));
+    assert_eq!(
+        Vertex::parse("-524288.0001", "0").unwrap().raw().0,
+        i32::MIN
+    );
+    assert_eq!(
+        Vertex::parse("-524288.000123", "0"),
+        Err(ParseCoordinateError::OutOfRange)
+    );
     // A long integer part far outside the range.
-    assert_eq!(Vertex::parse("99999999999999999999999999", "0"), Err(ParseCoordinateError::OutOfRange));
+    assert_eq!(
+        Vertex::parse("99999999999999999999999999", "0"),
+        Err(ParseCoordinateError::OutOfRange)
+    );
     // The case `fixed`'s own parser rounds the wrong way (4095.49988 steps).
     assert_eq!(Vertex::parse("1.9998779", "0").unwrap().raw().0, 8191);
-    assert_eq!(Vertex::parse("-524288.0001220703125", "0").unwrap().raw().0, i32::MIN);
+    assert_eq!(
+        Vertex::parse("-524288.0001220703125", "0").unwrap().raw().0,
+        i32::MIN
+    );
     assert_eq!(Vertex::try_from_num(-524288, 0).unwrap().raw().0, i32::MIN);
     assert_eq!(Vertex::try_from_num(524288, 0), Err(CoordinateOutOfRange));
     assert_eq!(Vertex::try_from_num(i64::MIN, 0), Err(CoordinateOutOfRange));
-    assert_eq!(Vertex::new(I20F12::MIN, I20F12::MAX).raw(), (i32::MIN, i32::MAX));
+    assert_eq!(
+        Vertex::new(I20F12::MIN, I20F12::MAX).raw(),
+        (i32::MIN, i32::MAX)
+    );
 }
 
 #[test]
 fn non_numbers_are_rejected() {
-    for bad in ["", "-", "+", ".", "nan", "NaN", "inf", "-inf", "1e3", "0x10", "1.2.3", "1,5", " 1", "1 ", "--1", "١"] {
-        assert_eq!(Vertex::parse(bad, "0"), Err(ParseCoordinateError::Invalid), "{bad:?}");
+    for bad in [
+        "", "-", "+", ".", "nan", "NaN", "inf", "-inf", "1e3", "0x10", "1.2.3", "1,5", " 1", "1 ",
+        "--1", "١",
+    ] {
+        assert_eq!(
+            Vertex::parse(bad, "0"),
+            Err(ParseCoordinateError::Invalid),
+            "{bad:?}"
+        );
     }
     for float in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
         assert_eq!(Vertex::try_from_num(float, 0), Err(CoordinateOutOfRange));
@@ -110,7 +151,16 @@ fn non_numbers_are_rejected() {
 
 #[test]
 fn decimal_forms_that_are_numbers() {
-    for (text, raw) in [("12", 12 * 4096), ("-3.5", -3 * 4096 - 2048), ("+2", 8192), ("5.", 5 * 4096), (".5", 2048), ("-0", 0), ("007.25", 7 * 4096 + 1024), ("100.000244140625", 100 * 4096 + 1)] {
+    for (text, raw) in [
+        ("12", 12 * 4096),
+        ("-3.5", -3 * 4096 - 2048),
+        ("+2", 8192),
+        ("5.", 5 * 4096),
+        (".5", 2048),
+        ("-0", 0),
+        ("007.25", 7 * 4096 + 1024),
+        ("100.000244140625", 100 * 4096 + 1),
+    ] {
         assert_eq!(Vertex::parse(text, "0").unwrap().raw().0, raw, "{text}");
     }
 }

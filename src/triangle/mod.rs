@@ -117,7 +117,8 @@ impl Triangle {
     /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::{Span, Triangle, Vertex};
     ///
-    /// // A right triangle with legs of 4 px, corners on pixel corners.
+    /// // A right triangle with legs of 4 px, corners on pixel corners. The
+    /// // centres on its hypotenuse (x + y = 4) lie on a right edge: unlit.
     /// let v = |x: i32, y: i32| Vertex::try_from_num(x, y).unwrap();
     /// let t = Triangle::new(v(0, 0), v(4, 0), v(0, 4));
     /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
@@ -127,7 +128,7 @@ impl Triangle {
     ///     Ok::<(), Infallible>(())
     /// })
     /// .unwrap();
-    /// assert_eq!(lens, [4, 3, 2, 1]);
+    /// assert_eq!(lens, [3, 2, 1, 0]);
     /// ```
     pub fn for_each_span<E>(
         &self,

@@ -301,11 +301,7 @@ impl<T: Step> Stepper<T> {
         })
     }
 
-    fn run<E>(
-        mut self,
-        s: &Setup,
-        emit: &mut impl FnMut(Span) -> Result<(), E>,
-    ) -> Result<(), E> {
+    fn run<E>(mut self, s: &Setup, emit: &mut impl FnMut(Span) -> Result<(), E>) -> Result<(), E> {
         let last = s.width - 1;
         let mut x = 0;
         for row in 0..s.height {

@@ -71,7 +71,13 @@ pub struct Grid {
 
 impl Grid {
     pub fn new(x0: i64, y0: i64, w: usize, h: usize) -> Self {
-        Self { x0, y0, w, h, cells: vec![0; w * h] }
+        Self {
+            x0,
+            y0,
+            w,
+            h,
+            cells: vec![0; w * h],
+        }
     }
 
     pub fn clip(&self) -> Rectangle {
@@ -87,7 +93,10 @@ impl Grid {
 
     pub fn bump(&mut self, i: i64, j: i64) {
         assert!(
-            i >= self.x0 && j >= self.y0 && i < self.x0 + self.w as i64 && j < self.y0 + self.h as i64,
+            i >= self.x0
+                && j >= self.y0
+                && i < self.x0 + self.w as i64
+                && j < self.y0 + self.h as i64,
             "write outside the clip rectangle at ({i}, {j})"
         );
         self.cells[(j - self.y0) as usize * self.w + (i - self.x0) as usize] += 1;
@@ -139,7 +148,10 @@ pub fn add_spans(t: &Triangle, g: &mut Grid) {
     let mut last_row = None;
     t.for_each_span(&g.clip(), |s: Span| {
         assert!(s.x_start < s.x_end, "empty span {s:?}");
-        assert!(last_row.map_or(true, |r| s.y > r), "rows out of order at {s:?}");
+        assert!(
+            last_row.is_none_or(|r| s.y > r),
+            "rows out of order at {s:?}"
+        );
         last_row = Some(s.y);
         for x in s.x_start..s.x_end {
             g.bump(i64::from(x), i64::from(s.y));

@@ -1,1 +1,0 @@
-//! Owned, const-sized framebuffers.

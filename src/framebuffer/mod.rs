@@ -1,0 +1,448 @@
+//! Owned, const-sized framebuffers.
+//!
+//! A [`Framebuffer`] is an array of bytes in a display's own format,
+//! drawn on through embedded-graphics' [`DrawTarget`] and sent to the
+//! display with [`as_bytes`](Framebuffer::as_bytes). Its size and format
+//! are type parameters, so it needs no allocation and can live in a
+//! `static`.
+//!
+//! # Formats
+//!
+//! Rows are stored top to bottom, each row left to right, with nothing
+//! between rows; a row of `width` pixels takes [`row_size`]`(width)` bytes
+//! and the whole buffer [`buffer_size`]`(width, height)`. Every byte is 0
+//! in a new framebuffer: black, or `Off`.
+//!
+//! | format | colour | bytes per pixel | layout |
+//! |---|---|---|---|
+//! | [`Rgb565Le`] | `Rgb565` | 2 | low byte first |
+//! | [`Rgb565Be`] | `Rgb565` | 2 | high byte first (SPI panels: ST7789, ILI9341, ...) |
+//! | [`Rgb888Bytes`] | `Rgb888` | 3 | red, green, blue |
+//! | [`Gray8Bytes`] | `Gray8` | 1 | luma |
+//! | [`BinaryMsb`] | `BinaryColor` | 1/8 | 8 per byte, leftmost in bit 7, rows padded to whole bytes |
+//!
+//! An Rgb565 pixel is 16 bits, red in the top 5, then green in 6, then
+//! blue in 5. Pixel `x` of a row takes bytes `2x` and `2x + 1`:
+//!
+//! ```text
+//!            bit 15                                 bit 0
+//! Rgb565     R4 R3 R2 R1 R0 G5 G4 G3 G2 G1 G0 B4 B3 B2 B1 B0
+//!            '----- high byte -----' '----- low byte ------'
+//!
+//!            byte 2x                   byte 2x + 1
+//! Rgb565Be   R4 R3 R2 R1 R0 G5 G4 G3   G2 G1 G0 B4 B3 B2 B1 B0
+//! Rgb565Le   G2 G1 G0 B4 B3 B2 B1 B0   R4 R3 R2 R1 R0 G5 G4 G3
+//!
+//! e.g. Rgb565::RED = 0xF800:  Be [0xF8, 0x00],  Le [0x00, 0xF8]
+//! ```
+//!
+//! [`BinaryMsb`] packs pixel `x` of a row into bit `7 - x % 8` of the
+//! row's byte `x / 8`, `On` as 1. A row of 10 pixels takes 2 bytes; the
+//! low 6 bits of its second byte are padding, which drawing never changes:
+//!
+//! ```text
+//!            byte 0                    byte 1
+//! bit        7  6  5  4  3  2  1  0    7  6  5  4  3  2  1  0
+//! pixel x    0  1  2  3  4  5  6  7    8  9  -  -  -  -  -  -
+//! ```
+//!
+//! Other layouts can be added by implementing [`PixelFormat`].
+//!
+//! # Speed and clipping
+//!
+//! [`fill_solid`](DrawTarget::fill_solid),
+//! [`fill_contiguous`](DrawTarget::fill_contiguous) and
+//! [`clear`](DrawTarget::clear) clip the area once and then fill whole
+//! byte slices per row (one slice for all rows when the area spans whole
+//! rows without padding): a `memset` for single-byte or uniform pixels,
+//! masked end bytes and a `memset` between for 1-bit pixels.
+//! [`draw_iter`](DrawTarget::draw_iter) checks each pixel. Whatever the
+//! coordinates and sizes, everything outside the framebuffer is ignored,
+//! without overflow or panic.
+//!
+//! # Examples
+//!
+//! ```
+//! use embedded_graphics_core::{pixelcolor::{Rgb565, RgbColor}, prelude::*, primitives::Rectangle};
+//! use embedded_raster::framebuffer::{buffer_size, Framebuffer, Rgb565Be};
+//!
+//! let mut fb = Framebuffer::<Rgb565Be, 320, 240, { buffer_size::<Rgb565Be>(320, 240) }>::new();
+//! fb.clear(Rgb565::BLUE)?;
+//! fb.fill_solid(&Rectangle::new(Point::new(-10, 100), Size::new(50, 20)), Rgb565::RED)?;
+//! assert_eq!(fb.pixel(Point::new(39, 119)), Some(Rgb565::RED));
+//! assert_eq!(fb.pixel(Point::new(40, 119)), Some(Rgb565::BLUE));
+//! let bytes: &[u8] = fb.as_bytes(); // 153600 bytes, ready for the panel
+//! assert_eq!(bytes.len(), 320 * 240 * 2);
+//! # Ok::<(), core::convert::Infallible>(())
+//! ```
+
+mod format;
+
+pub use format::{BinaryMsb, Gray8Bytes, PixelFormat, Rgb565Be, Rgb565Le, Rgb888Bytes};
+
+use core::{convert::Infallible, fmt, marker::PhantomData, ops::Range, slice::ChunksExactMut};
+
+use embedded_graphics_core::{
+    draw_target::DrawTarget,
+    geometry::{Dimensions, OriginDimensions, Point, Size},
+    primitives::Rectangle,
+    Pixel,
+};
+
+use crate::clip::{clip_to, row_major_skips};
+
+/// Bytes a row of `width` pixels takes in format `F`:
+/// `ceil(width * F::BITS_PER_PIXEL / 8)`.
+///
+/// # Panics
+///
+/// If the number of bits overflows `usize` (at compile time when used as a
+/// const).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::framebuffer::{row_size, BinaryMsb, Rgb888Bytes};
+///
+/// assert_eq!(row_size::<Rgb888Bytes>(10), 30);
+/// assert_eq!(row_size::<BinaryMsb>(10), 2);
+/// assert_eq!(row_size::<BinaryMsb>(16), 2);
+/// ```
+pub const fn row_size<F: PixelFormat>(width: usize) -> usize {
+    match width.checked_mul(F::BITS_PER_PIXEL) {
+        Some(bits) => bits.div_ceil(8),
+        None => panic!("framebuffer row size overflows usize"),
+    }
+}
+
+/// Bytes a framebuffer of `width` x `height` pixels takes in format `F`:
+/// `height` rows of [`row_size`]`(width)` bytes. The `N` parameter of
+/// [`Framebuffer`].
+///
+/// # Panics
+///
+/// If the size overflows `usize` (at compile time when used as a const).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::framebuffer::{buffer_size, BinaryMsb, Gray8Bytes, Rgb565Be};
+///
+/// assert_eq!(buffer_size::<Rgb565Be>(320, 240), 153_600);
+/// assert_eq!(buffer_size::<Gray8Bytes>(3, 2), 6);
+/// assert_eq!(buffer_size::<BinaryMsb>(10, 3), 6); // each row padded to 2 bytes
+/// ```
+pub const fn buffer_size<F: PixelFormat>(width: usize, height: usize) -> usize {
+    match row_size::<F>(width).checked_mul(height) {
+        Some(size) => size,
+        None => panic!("framebuffer size overflows usize"),
+    }
+}
+
+/// An owned `W` x `H` framebuffer of `N` bytes in pixel format `F`, and a
+/// [`DrawTarget`] for `F::Color`.
+///
+/// `N` must be [`buffer_size::<F>(W, H)`](buffer_size), which
+/// [`new`](Self::new) checks at compile time. The byte layout is described
+/// in the [module docs](self). Drawing outside the framebuffer is ignored;
+/// see [Speed and clipping](self#speed-and-clipping).
+///
+/// `Debug` shows the format and dimensions, not the pixels; `==` compares
+/// the bytes.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+/// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer};
+///
+/// type Epaper = Framebuffer<BinaryMsb, 200, 200, { buffer_size::<BinaryMsb>(200, 200) }>;
+///
+/// let mut fb = Epaper::new();
+/// fb.fill_solid(&Rectangle::new(Point::new(4, 0), Size::new(8, 2)), BinaryColor::On)?;
+/// assert_eq!(fb.as_bytes()[..3], [0b0000_1111, 0b1111_0000, 0]);
+/// assert_eq!(fb.size(), Size::new(200, 200));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+pub struct Framebuffer<F, const W: usize, const H: usize, const N: usize> {
+    data: [u8; N],
+    format: PhantomData<F>,
+}
+
+impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer<F, W, H, N> {
+    /// Bytes per row.
+    const STRIDE: usize = row_size::<F>(W);
+
+    /// Whether rows have no padding bits, so that consecutive whole rows
+    /// form one longer row.
+    const UNPADDED: bool = match W.checked_mul(F::BITS_PER_PIXEL) {
+        Some(bits) => bits % 8 == 0,
+        None => false,
+    };
+
+    /// A framebuffer with every byte 0 (black, or `Off`, in the built-in
+    /// formats). A `const fn`, so the framebuffer can be a `static`.
+    ///
+    /// It fails to compile unless `N` is
+    /// [`buffer_size::<F>(W, H)`](buffer_size).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+    /// use embedded_raster::{framebuffer::{buffer_size, Rgb565Le}, Framebuffer};
+    ///
+    /// static BLANK: Framebuffer<Rgb565Le, 8, 8, { buffer_size::<Rgb565Le>(8, 8) }> =
+    ///     Framebuffer::new();
+    /// assert_eq!(BLANK.pixel(Point::new(7, 7)), Some(Rgb565::BLACK));
+    /// ```
+    ///
+    /// A wrong `N` is a compile error:
+    ///
+    /// ```compile_fail
+    /// use embedded_raster::{framebuffer::Rgb565Le, Framebuffer};
+    ///
+    /// let fb = Framebuffer::<Rgb565Le, 8, 8, 64>::new(); // needs 128 bytes
+    /// ```
+    pub const fn new() -> Self {
+        const {
+            assert!(
+                F::BITS_PER_PIXEL > 0 && N == buffer_size::<F>(W, H),
+                "Framebuffer<F, W, H, N> needs N == buffer_size::<F>(W, H)"
+            );
+        }
+        Self {
+            data: [0; N],
+            format: PhantomData,
+        }
+    }
+
+    /// The pixel bytes, rows top to bottom, ready to send to a display.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
+    ///
+    /// let mut fb = Framebuffer::<Gray8Bytes, 2, 2, { buffer_size::<Gray8Bytes>(2, 2) }>::new();
+    /// Pixel(Point::new(1, 0), Gray8::new(7)).draw(&mut fb)?;
+    /// assert_eq!(fb.as_bytes(), [0, 7, 0, 0]);
+    /// # Ok::<(), core::convert::Infallible>(())
+    /// ```
+    pub const fn as_bytes(&self) -> &[u8] {
+        &self.data
+    }
+
+    /// The pixel bytes, for writing directly, e.g. to load an image.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
+    ///
+    /// let mut fb = Framebuffer::<Gray8Bytes, 2, 2, { buffer_size::<Gray8Bytes>(2, 2) }>::new();
+    /// fb.as_bytes_mut()[3] = 9;
+    /// assert_eq!(fb.pixel(Point::new(1, 1)), Some(Gray8::new(9)));
+    /// ```
+    pub const fn as_bytes_mut(&mut self) -> &mut [u8] {
+        &mut self.data
+    }
+
+    /// The colour of the pixel at `p`, or `None` if `p` is outside.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer};
+    ///
+    /// let mut fb = Framebuffer::<BinaryMsb, 10, 4, { buffer_size::<BinaryMsb>(10, 4) }>::new();
+    /// Pixel(Point::new(9, 3), BinaryColor::On).draw(&mut fb)?;
+    /// assert_eq!(fb.pixel(Point::new(9, 3)), Some(BinaryColor::On));
+    /// assert_eq!(fb.pixel(Point::new(8, 3)), Some(BinaryColor::Off));
+    /// assert_eq!(fb.pixel(Point::new(10, 3)), None);
+    /// assert_eq!(fb.pixel(Point::new(-1, 0)), None);
+    /// # Ok::<(), core::convert::Infallible>(())
+    /// ```
+    pub fn pixel(&self, p: Point) -> Option<F::Color> {
+        let (x, y) = Self::locate(p)?;
+        F::read_pixel(self.row(y)?, x)
+    }
+
+    /// The column and row of `p`, if it is inside.
+    fn locate(p: Point) -> Option<(usize, usize)> {
+        let x = usize::try_from(p.x).ok().filter(|&x| x < W)?;
+        let y = usize::try_from(p.y).ok().filter(|&y| y < H)?;
+        Some((x, y))
+    }
+
+    /// The bytes of row `y`, or `None` if there is no such row.
+    fn row(&self, y: usize) -> Option<&[u8]> {
+        let start = y.checked_mul(Self::STRIDE)?;
+        self.data.get(start..start.checked_add(Self::STRIDE)?)
+    }
+
+    /// The bytes of row `y`, or `None` if there is no such row.
+    fn row_mut(&mut self, y: usize) -> Option<&mut [u8]> {
+        let start = y.checked_mul(Self::STRIDE)?;
+        self.data.get_mut(start..start.checked_add(Self::STRIDE)?)
+    }
+
+    /// Rows `ys` as byte slices, and the pixels `xs` of each to draw.
+    ///
+    /// With `merge`, if `xs` is every column and rows have no padding, all
+    /// rows come as one slice holding one long row, and the pixel range
+    /// covers them all.
+    fn rows_mut(
+        &mut self,
+        xs: Range<usize>,
+        ys: Range<usize>,
+        merge: bool,
+    ) -> (ChunksExactMut<'_, u8>, Range<usize>) {
+        let stride = Self::STRIDE;
+        let bytes = match (ys.start.checked_mul(stride), ys.end.checked_mul(stride)) {
+            (Some(start), Some(end)) => self.data.get_mut(start..end).unwrap_or_default(),
+            _ => Default::default(),
+        };
+        let whole_rows = merge && Self::UNPADDED && xs.start == 0 && xs.end == W;
+        match (whole_rows, bytes.len(), ys.len().checked_mul(W)) {
+            (true, len @ 1.., Some(pixels)) => (bytes.chunks_exact_mut(len), 0..pixels),
+            _ => (bytes.chunks_exact_mut(stride.max(1)), xs),
+        }
+    }
+}
+
+/// Advances `iter` by `n` items; `false` if it ended first.
+fn advance<I: Iterator>(iter: &mut I, mut n: u64) -> bool {
+    while n > 0 {
+        // `nth` skips in O(1) on many iterators, e.g. `repeat` and slices.
+        let step = usize::try_from(n).unwrap_or(usize::MAX);
+        if iter.nth(step - 1).is_none() {
+            return false;
+        }
+        n -= step as u64; // `step <= n`, and `usize` has at most 64 bits.
+    }
+    true
+}
+
+impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
+    for Framebuffer<F, W, H, N>
+{
+    type Color = F::Color;
+    type Error = Infallible;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Infallible>
+    where
+        I: IntoIterator<Item = Pixel<F::Color>>,
+    {
+        for Pixel(p, color) in pixels {
+            if let Some((x, y)) = Self::locate(p) {
+                if let Some(row) = self.row_mut(y) {
+                    F::write_pixel(row, x, color);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Writes the colours that fall inside, row by row, skipping the others
+    /// with [`Iterator::nth`], and stops after the last pixel inside.
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Infallible>
+    where
+        I: IntoIterator<Item = F::Color>,
+    {
+        let bounds = self.bounding_box();
+        let (Some((xs, ys)), Some((skip, gap))) =
+            (clip_to(area, &bounds), row_major_skips(area, &bounds))
+        else {
+            return Ok(());
+        };
+        let mut colors = colors.into_iter();
+        let (rows, span) = self.rows_mut(xs, ys, gap == 0);
+        let mut pending = skip;
+        for row in rows {
+            if !advance(&mut colors, pending)
+                || F::write_span(row, span.clone(), &mut colors) < span.len()
+            {
+                break;
+            }
+            pending = gap;
+        }
+        Ok(())
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, color: F::Color) -> Result<(), Infallible> {
+        if let Some((xs, ys)) = clip_to(area, &self.bounding_box()) {
+            let (rows, span) = self.rows_mut(xs, ys, true);
+            for row in rows {
+                F::fill_span(row, span.clone(), color);
+            }
+        }
+        Ok(())
+    }
+
+    fn clear(&mut self, color: F::Color) -> Result<(), Infallible> {
+        let (rows, span) = self.rows_mut(0..W, 0..H, true);
+        for row in rows {
+            F::fill_span(row, span.clone(), color);
+        }
+        Ok(())
+    }
+}
+
+impl<F, const W: usize, const H: usize, const N: usize> OriginDimensions
+    for Framebuffer<F, W, H, N>
+{
+    fn size(&self) -> Size {
+        let side = |n: usize| u32::try_from(n).unwrap_or(u32::MAX);
+        Size::new(side(W), side(H))
+    }
+}
+
+/// Same as [`Framebuffer::new`].
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
+///
+/// let fb: Framebuffer<Gray8Bytes, 4, 4, { buffer_size::<Gray8Bytes>(4, 4) }> = Default::default();
+/// assert_eq!(fb.as_bytes(), [0; 16]);
+/// ```
+impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Default
+    for Framebuffer<F, W, H, N>
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<F, const W: usize, const H: usize, const N: usize> Clone for Framebuffer<F, W, H, N> {
+    fn clone(&self) -> Self {
+        Self {
+            data: self.data,
+            format: PhantomData,
+        }
+    }
+}
+
+impl<F, const W: usize, const H: usize, const N: usize> PartialEq for Framebuffer<F, W, H, N> {
+    fn eq(&self, other: &Self) -> bool {
+        self.data == other.data
+    }
+}
+
+impl<F, const W: usize, const H: usize, const N: usize> Eq for Framebuffer<F, W, H, N> {}
+
+impl<F, const W: usize, const H: usize, const N: usize> fmt::Debug for Framebuffer<F, W, H, N> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Framebuffer")
+            .field("format", &core::any::type_name::<F>())
+            .field("width", &W)
+            .field("height", &H)
+            .field("bytes", &N)
+            .finish_non_exhaustive()
+    }
+}

@@ -1,0 +1,232 @@
+//! The command line of the `render` example, as a library function so that
+//! it can be tested without spawning a process.
+//!
+//! ```text
+//! render SCENE -o OUT.png [--counts COUNTS.pgm] [--stats]
+//! ```
+//!
+//! # Examples
+//!
+//! ```
+//! use embedded_raster::sim::cli;
+//!
+//! let (mut out, mut err) = (Vec::new(), Vec::new());
+//! assert_eq!(cli::run(["--help"], &mut out, &mut err), cli::EXIT_OK);
+//! assert!(String::from_utf8(out)?.starts_with("usage: render SCENE"));
+//! # Ok::<(), std::string::FromUtf8Error>(())
+//! ```
+
+use std::ffi::OsString;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::prelude::rust_2021::*;
+use std::{format, writeln};
+
+use super::{parse_scene, render_scene};
+
+/// Exit code of a successful run (and of `--help`).
+///
+/// # Examples
+///
+/// ```
+/// assert_eq!(embedded_raster::sim::cli::EXIT_OK, 0);
+/// ```
+pub const EXIT_OK: i32 = 0;
+
+/// Exit code when the scene is bad or a file cannot be read or written.
+///
+/// # Examples
+///
+/// ```
+/// assert_eq!(embedded_raster::sim::cli::EXIT_FAILURE, 1);
+/// ```
+pub const EXIT_FAILURE: i32 = 1;
+
+/// Exit code for a bad command line.
+///
+/// # Examples
+///
+/// ```
+/// assert_eq!(embedded_raster::sim::cli::EXIT_USAGE, 2);
+/// ```
+pub const EXIT_USAGE: i32 = 2;
+
+/// The help text, printed by `--help` (on stdout) and after a usage error
+/// (on stderr).
+///
+/// # Examples
+///
+/// ```
+/// assert!(embedded_raster::sim::cli::USAGE.contains("--counts"));
+/// ```
+pub const USAGE: &str = "\
+usage: render SCENE -o OUT.png [--counts COUNTS.pgm] [--stats]
+
+Renders a scene file to an 8-bit RGB PNG.
+
+options:
+  -o, --output OUT.png     where to write the image (required)
+  --counts COUNTS.pgm      also write per-pixel write counts as a binary PGM
+                           (P5, maxval 255, saturating)
+  --stats                  print {\"primitives\":N,\"pixels_written\":N,\"raster_seconds\":S}
+                           on stdout
+  -h, --help               print this help
+
+On a bad scene, prints `SCENE:LINE: what is wrong` on stderr, writes no
+file and exits with 1; on a bad command line, exits with 2.
+";
+
+/// What the command line asks for.
+#[derive(Debug)]
+struct Options {
+    scene: PathBuf,
+    output: PathBuf,
+    counts: Option<PathBuf>,
+    stats: bool,
+}
+
+/// Runs the `render` command line on `args` (without the program name),
+/// writing to `stdout` and `stderr`, and returns the process exit code:
+/// [`EXIT_OK`], [`EXIT_FAILURE`] or [`EXIT_USAGE`].
+///
+/// The scene is read, parsed and rendered, and both images are encoded,
+/// before any file is written: a bad scene leaves no output file. Every
+/// error is reported as one line on `stderr` (followed by [`USAGE`] for a
+/// bad command line): `SCENE:LINE: message` for a bad scene,
+/// `PATH: message` for an I/O error.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::sim::cli;
+///
+/// let dir = std::env::temp_dir();
+/// let scene = dir.join(format!("cli-doc-{}.scene", std::process::id()));
+/// let png = dir.join(format!("cli-doc-{}.png", std::process::id()));
+/// std::fs::write(&scene, "size 4 4\nclear #ff0000\n")?;
+///
+/// let (mut out, mut err) = (Vec::new(), Vec::new());
+/// let args = [scene.as_os_str(), "-o".as_ref(), png.as_os_str(), "--stats".as_ref()];
+/// assert_eq!(cli::run(args, &mut out, &mut err), cli::EXIT_OK);
+/// assert!(String::from_utf8_lossy(&out).starts_with(r#"{"primitives":1,"pixels_written":16,"#));
+/// assert!(err.is_empty());
+/// assert!(png.exists());
+/// # std::fs::remove_file(&scene)?;
+/// # std::fs::remove_file(&png)?;
+/// # Ok::<(), std::io::Error>(())
+/// ```
+pub fn run<I, S>(args: I, mut stdout: impl Write, mut stderr: impl Write) -> i32
+where
+    I: IntoIterator<Item = S>,
+    S: Into<OsString>,
+{
+    // Failing to report on stdout or stderr leaves nothing better to do.
+    let options = match parse_args(args.into_iter().map(Into::into)) {
+        Ok(Some(options)) => options,
+        Ok(None) => {
+            return match stdout.write_all(USAGE.as_bytes()) {
+                Ok(()) => EXIT_OK,
+                Err(_) => EXIT_FAILURE,
+            };
+        }
+        Err(message) => {
+            let _ = write!(stderr, "render: {message}\n\n{USAGE}");
+            return EXIT_USAGE;
+        }
+    };
+    match render(&options, &mut stdout) {
+        Ok(()) => EXIT_OK,
+        Err(message) => {
+            let _ = writeln!(stderr, "{message}");
+            EXIT_FAILURE
+        }
+    }
+}
+
+/// `Ok(None)` for `--help`.
+fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options>, String> {
+    let mut scene = None;
+    let mut output = None;
+    let mut counts = None;
+    let mut stats = false;
+    while let Some(arg) = args.next() {
+        let mut value = |slot: &mut Option<PathBuf>, name: &str| {
+            let v = args
+                .next()
+                .ok_or_else(|| format!("`{name}` needs a file name"))?;
+            match slot.replace(v.into()) {
+                Some(_) => Err(format!("`{name}` given twice")),
+                None => Ok(()),
+            }
+        };
+        match arg.to_str() {
+            Some("-h" | "--help") => return Ok(None),
+            Some(name @ ("-o" | "--output")) => value(&mut output, name)?,
+            Some("--counts") => value(&mut counts, "--counts")?,
+            Some("--stats") => stats = true,
+            Some(a) if a.starts_with('-') && a != "-" => {
+                return Err(format!("unknown option `{a}`"))
+            }
+            _ if scene.is_some() => {
+                return Err(format!(
+                    "unexpected argument `{}`: one scene file at a time",
+                    arg.to_string_lossy()
+                ))
+            }
+            _ => scene = Some(PathBuf::from(arg)),
+        }
+    }
+    Ok(Some(Options {
+        scene: scene.ok_or("missing SCENE file")?,
+        output: output.ok_or("missing `-o OUT.png`")?,
+        counts,
+        stats,
+    }))
+}
+
+/// Everything after the command line; the error is the one stderr line.
+fn render(options: &Options, stdout: &mut impl Write) -> Result<(), String> {
+    let scene_path = options.scene.display();
+    let bytes =
+        std::fs::read(&options.scene).map_err(|e| format!("{scene_path}: cannot read: {e}"))?;
+    let text = std::str::from_utf8(&bytes).map_err(|e| {
+        let line = 1 + bytes[..e.valid_up_to()]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count();
+        format!("{scene_path}:{line}: not valid UTF-8")
+    })?;
+    let scene = parse_scene(text).map_err(|e| format!("{scene_path}:{}: {e}", e.line))?;
+    let rendered = render_scene(&scene);
+
+    let mut png = Vec::new();
+    rendered
+        .display
+        .write_png(&mut png)
+        .map_err(|e| format!("{}: cannot encode PNG: {e}", options.output.display()))?;
+    let counts = match &options.counts {
+        Some(path) => {
+            let mut pgm = Vec::new();
+            rendered
+                .display
+                .write_counts_pgm(&mut pgm)
+                .map_err(|e| format!("{}: cannot encode PGM: {e}", path.display()))?;
+            Some((path, pgm))
+        }
+        None => None,
+    };
+
+    write_file(&options.output, &png)?;
+    if let Some((path, pgm)) = counts {
+        write_file(path, &pgm)?;
+    }
+    if options.stats {
+        writeln!(stdout, "{}", rendered.stats.to_json())
+            .map_err(|e| format!("cannot write to stdout: {e}"))?;
+    }
+    Ok(())
+}
+
+fn write_file(path: &Path, bytes: &[u8]) -> Result<(), String> {
+    std::fs::write(path, bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
+}

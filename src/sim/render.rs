@@ -1,0 +1,172 @@
+//! Scene rendering and its statistics.
+
+use std::format;
+use std::prelude::rust_2021::*;
+use std::time::{Duration, Instant};
+
+use embedded_graphics_core::{
+    draw_target::DrawTarget,
+    geometry::{Point, Size},
+    pixelcolor::{Rgb888, RgbColor},
+    primitives::Rectangle,
+    Drawable,
+};
+
+use super::{Command, Scene, SimDisplay};
+use crate::clip::Bounds;
+
+/// The part of `rect` inside `clip`, or `None` if there is none.
+fn clip(rect: &Rectangle, clip: &Rectangle) -> Option<Rectangle> {
+    let b = Bounds::of(rect).intersect(Bounds::of(clip))?;
+    // Inside `clip`, so every value fits again.
+    let top_left = Point::new(i32::try_from(b.x0).ok()?, i32::try_from(b.y0).ok()?);
+    let width = u32::try_from(b.x1 - b.x0).ok()?;
+    let height = u32::try_from(b.y1 - b.y0).ok()?;
+    Some(Rectangle::new(top_left, Size::new(width, height)))
+}
+
+impl Command {
+    /// Draws the command on `target`: `clear` with [`DrawTarget::clear`],
+    /// `rect` clipped to the target's bounding box (without overflow, for
+    /// any position and size) and then, unless nothing is left, with one
+    /// [`DrawTarget::fill_solid`] call, `tri` as a
+    /// [`FilledTriangle`](crate::FilledTriangle). Nothing is drawn outside
+    /// the target.
+    ///
+    /// # Errors
+    ///
+    /// Any error of `target`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{pixelcolor::Rgb888, prelude::*};
+    /// use embedded_raster::sim::{parse_scene, SimDisplay};
+    ///
+    /// let scene = parse_scene("size 4 4\nrect 1 1 100 100 #00ff00")?;
+    /// let mut display = SimDisplay::new(4, 4, Rgb888::BLACK);
+    /// let Ok(()) = scene.commands()[0].draw(&mut display);
+    /// assert_eq!(display.pixel(Point::new(3, 3)), Some(Rgb888::GREEN));
+    /// assert_eq!(display.pixels_written(), 9);
+    /// assert_eq!(display.out_of_bounds_writes(), 0);
+    /// # Ok::<(), embedded_raster::sim::SceneError>(())
+    /// ```
+    pub fn draw<D: DrawTarget<Color = Rgb888>>(&self, target: &mut D) -> Result<(), D::Error> {
+        match *self {
+            Self::Clear(color) => target.clear(color),
+            Self::Rect(rect, color) => match clip(&rect, &target.bounding_box()) {
+                Some(visible) => target.fill_solid(&visible, color),
+                None => Ok(()),
+            },
+            Self::Tri(triangle, color) => triangle.fill(color).draw(target),
+        }
+    }
+}
+
+/// A rendered scene: the final framebuffer, whose write counts cover the
+/// whole scene, and the statistics of the run.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::sim::{parse_scene, render_scene};
+///
+/// let rendered = render_scene(&parse_scene("size 8 8\nclear #ffffff")?);
+/// assert_eq!(rendered.display.pixels_written(), 64);
+/// assert_eq!(rendered.stats.primitives, 1);
+/// # Ok::<(), embedded_raster::sim::SceneError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Rendered {
+    /// The framebuffer after the last command.
+    pub display: SimDisplay<Rgb888>,
+    /// What it took.
+    pub stats: RenderStats,
+}
+
+/// Statistics of a [`render_scene`] run.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::sim::{parse_scene, render_scene};
+///
+/// let scene = parse_scene("size 10 10\nrect 0 0 5 2 #ff0000\ntri 0 0 10 0 0 10 #00ff00")?;
+/// let stats = render_scene(&scene).stats;
+/// assert_eq!((stats.primitives, stats.pixels_written), (2, 10 + 45));
+/// # Ok::<(), embedded_raster::sim::SceneError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct RenderStats {
+    /// Commands drawn: every command after `size`.
+    pub primitives: u64,
+    /// Pixel writes inside the framebuffer, summed over all commands
+    /// (`clear` writes every pixel; the initial black is not a write).
+    pub pixels_written: u64,
+    /// Wall-clock time spent drawing the commands (not parsing, not
+    /// allocating the framebuffer, not encoding images).
+    pub raster_time: Duration,
+}
+
+impl RenderStats {
+    /// The statistics as one line of JSON, with the fields `primitives`,
+    /// `pixels_written` (integers) and `raster_seconds` (a decimal number).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::time::Duration;
+    /// use embedded_raster::sim::RenderStats;
+    ///
+    /// let stats = RenderStats {
+    ///     primitives: 3,
+    ///     pixels_written: 1234,
+    ///     raster_time: Duration::from_micros(125),
+    /// };
+    /// assert_eq!(
+    ///     stats.to_json(),
+    ///     r#"{"primitives":3,"pixels_written":1234,"raster_seconds":0.000125}"#,
+    /// );
+    /// ```
+    pub fn to_json(&self) -> String {
+        format!(
+            r#"{{"primitives":{},"pixels_written":{},"raster_seconds":{}}}"#,
+            self.primitives,
+            self.pixels_written,
+            self.raster_time.as_secs_f64()
+        )
+    }
+}
+
+/// Renders `scene` on a new black [`SimDisplay`] of the scene's size.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::Rgb888, prelude::*};
+/// use embedded_raster::sim::{parse_scene, render_scene};
+///
+/// let scene = parse_scene("size 16 16\ntri 0 0 16 0 0 16 #FF0000\ntri 16 0 16 16 0 16 #0000ff")?;
+/// let rendered = render_scene(&scene);
+/// let display = &rendered.display;
+/// assert_eq!(display.pixel(Point::new(0, 0)), Some(Rgb888::RED));
+/// assert_eq!(display.pixel(Point::new(15, 15)), Some(Rgb888::BLUE));
+/// // The two halves share their diagonal: every pixel is written once.
+/// assert!(display.counts().iter().all(|&c| c == 1));
+/// # Ok::<(), embedded_raster::sim::SceneError>(())
+/// ```
+pub fn render_scene(scene: &Scene) -> Rendered {
+    let size = scene.size();
+    let mut display = SimDisplay::new(size.width, size.height, Rgb888::BLACK);
+    let start = Instant::now();
+    for command in scene.commands() {
+        let Ok(()) = command.draw(&mut display);
+    }
+    let raster_time = start.elapsed();
+    let stats = RenderStats {
+        primitives: scene.commands().len() as u64,
+        pixels_written: display.pixels_written(),
+        raster_time,
+    };
+    Rendered { display, stats }
+}

@@ -1,0 +1,309 @@
+//! Scene files: parsing.
+//!
+//! The format is specified in the crate's scene-format contract; in short,
+//! one command per line, `#` comment lines, blank-separated tokens:
+//!
+//! ```text
+//! size W H
+//! clear #RRGGBB
+//! rect X Y W H #RRGGBB
+//! tri X0 Y0 X1 Y1 X2 Y2 #RRGGBB
+//! ```
+
+use core::fmt;
+use std::format;
+use std::prelude::rust_2021::*;
+
+use embedded_graphics_core::{
+    geometry::{Point, Size},
+    pixelcolor::Rgb888,
+    primitives::Rectangle,
+};
+
+use crate::{ParseCoordinateError, Triangle, Vertex};
+
+/// Largest width and height a scene may have.
+pub const MAX_SCENE_SIDE: u32 = 4096;
+
+/// A parsed scene: its framebuffer size and its drawing commands, in order.
+///
+/// Made by [`parse_scene`], which guarantees `1 <= width, height <= 4096`.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{geometry::Size, pixelcolor::Rgb888};
+/// use embedded_raster::sim::{parse_scene, Command};
+///
+/// let scene = parse_scene("size 32 16\nclear #102030\n")?;
+/// assert_eq!(scene.size(), Size::new(32, 16));
+/// assert_eq!(scene.commands(), &[Command::Clear(Rgb888::new(0x10, 0x20, 0x30))]);
+/// # Ok::<(), embedded_raster::sim::SceneError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Scene {
+    size: Size,
+    commands: Vec<Command>,
+}
+
+impl Scene {
+    /// The framebuffer size given by the scene's `size` command.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::geometry::Size;
+    /// use embedded_raster::sim::parse_scene;
+    ///
+    /// assert_eq!(parse_scene("size 1 4096")?.size(), Size::new(1, 4096));
+    /// # Ok::<(), embedded_raster::sim::SceneError>(())
+    /// ```
+    pub fn size(&self) -> Size {
+        self.size
+    }
+
+    /// The drawing commands after `size`, in file order.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::sim::parse_scene;
+    ///
+    /// let scene = parse_scene("size 8 8\n# nothing else\n")?;
+    /// assert!(scene.commands().is_empty());
+    /// # Ok::<(), embedded_raster::sim::SceneError>(())
+    /// ```
+    pub fn commands(&self) -> &[Command] {
+        &self.commands
+    }
+}
+
+/// One drawing command of a [`Scene`].
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
+/// use embedded_raster::sim::{parse_scene, Command};
+///
+/// let scene = parse_scene("size 8 8\nrect -2 3 4 0 #FF0000")?;
+/// assert_eq!(
+///     scene.commands(),
+///     &[Command::Rect(Rectangle::new(Point::new(-2, 3), Size::new(4, 0)), Rgb888::RED)],
+/// );
+/// # Ok::<(), embedded_raster::sim::SceneError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Command {
+    /// `clear #RRGGBB`: fill the whole framebuffer.
+    Clear(Rgb888),
+    /// `rect X Y W H #RRGGBB`: fill a pixel rectangle, clipped.
+    Rect(Rectangle, Rgb888),
+    /// `tri X0 Y0 X1 Y1 X2 Y2 #RRGGBB`: fill a triangle.
+    Tri(Triangle, Rgb888),
+}
+
+/// Why a scene could not be parsed: a 1-based line number and a one-line,
+/// lowercase message.
+///
+/// It displays as the message alone; a caller reporting it on a file
+/// prefixes `FILE:LINE: `.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::sim::parse_scene;
+///
+/// let err = parse_scene("size 8 8\n\nline 0 0 7 7 #ffffff\n").unwrap_err();
+/// assert_eq!(err.line, 3);
+/// assert_eq!(err.to_string(), "unknown command `line`");
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct SceneError {
+    /// The line the problem is on, counting from 1. A missing `size`
+    /// command is reported on the last line (1 for an empty scene).
+    pub line: usize,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for SceneError {}
+
+/// Parses a scene file.
+///
+/// Every line is checked before anything is drawn, so a scene that parses
+/// renders without error.
+///
+/// # Errors
+///
+/// [`SceneError`] with the line of the first problem: a first command
+/// other than `size`, a second `size`, an unknown command, a wrong number
+/// of arguments, a bad integer, number or colour, a size outside
+/// `1..=4096`, a negative rectangle size, a coordinate out of range, or no
+/// `size` at all.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::sim::parse_scene;
+///
+/// let scene = parse_scene(
+///     "# a red triangle on blue\n\
+///      size 64 48\n\
+///      clear #0000ff\n\
+///      \ttri 4 4  60.5 10.25  20 44 #FF0000\n",
+/// )?;
+/// assert_eq!(scene.commands().len(), 2);
+///
+/// let err = parse_scene("size 8 8\ntri 0 0 1 1 2 #fff").unwrap_err();
+/// assert_eq!((err.line, err.message.as_str()), (2, "`tri` takes 7 arguments, got 6"));
+/// # Ok::<(), embedded_raster::sim::SceneError>(())
+/// ```
+pub fn parse_scene(text: &str) -> Result<Scene, SceneError> {
+    let mut size: Option<(usize, Size)> = None;
+    let mut commands = Vec::new();
+    let mut last_line = 1;
+    for (index, line) in text.lines().enumerate() {
+        let line_no = index + 1;
+        last_line = line_no;
+        let mut tokens = line.split([' ', '\t']).filter(|t| !t.is_empty());
+        let Some(word) = tokens.next() else {
+            continue;
+        };
+        if word.starts_with('#') {
+            continue;
+        }
+        let args: Vec<&str> = tokens.collect();
+        let err = |message: String| SceneError {
+            line: line_no,
+            message,
+        };
+        match (word, size) {
+            ("size", None) => size = Some((line_no, parse_size(&args).map_err(err)?)),
+            ("size", Some((first, _))) => {
+                return Err(err(format!("duplicate `size` (first on line {first})")))
+            }
+            (_, None) => return Err(err("`size` must come first".into())),
+            (_, Some(_)) => commands.push(parse_command(word, &args).map_err(err)?),
+        }
+    }
+    match size {
+        Some((_, size)) => Ok(Scene { size, commands }),
+        None => Err(SceneError {
+            line: last_line,
+            message: "missing `size` command".into(),
+        }),
+    }
+}
+
+/// Parses one drawing command: one match arm per command word.
+fn parse_command(word: &str, args: &[&str]) -> Result<Command, String> {
+    match word {
+        "clear" => {
+            let [c] = arity::<1>(word, args)?;
+            Ok(Command::Clear(colour(c)?))
+        }
+        "rect" => {
+            let [x, y, w, h, c] = arity::<5>(word, args)?;
+            let top_left = Point::new(integer(x)?, integer(y)?);
+            let size = Size::new(extent(w, "width")?, extent(h, "height")?);
+            Ok(Command::Rect(Rectangle::new(top_left, size), colour(c)?))
+        }
+        "tri" => {
+            let [x0, y0, x1, y1, x2, y2, c] = arity::<7>(word, args)?;
+            let triangle = Triangle::new(vertex(x0, y0)?, vertex(x1, y1)?, vertex(x2, y2)?);
+            Ok(Command::Tri(triangle, colour(c)?))
+        }
+        _ => Err(format!("unknown command `{}`", Shown(word))),
+    }
+}
+
+fn parse_size(args: &[&str]) -> Result<Size, String> {
+    let [w, h] = arity::<2>("size", args)?;
+    let side = |t: &str| match t.parse::<u32>() {
+        Ok(v) if (1..=MAX_SCENE_SIDE).contains(&v) => Ok(v),
+        _ if is_integer(t) => Err(format!(
+            "size out of range: `{}` (must be 1 to {MAX_SCENE_SIDE})",
+            Shown(t)
+        )),
+        _ => Err(format!("bad integer `{}`", Shown(t))),
+    };
+    Ok(Size::new(side(w)?, side(h)?))
+}
+
+/// The arguments as an array of exactly `N`, or the wrong-count error.
+fn arity<'a, const N: usize>(word: &str, args: &[&'a str]) -> Result<[&'a str; N], String> {
+    <[&str; N]>::try_from(args).map_err(|_| {
+        let plural = if N == 1 { "" } else { "s" };
+        format!("`{word}` takes {N} argument{plural}, got {}", args.len())
+    })
+}
+
+/// Whether `t` is an optionally signed run of ASCII digits.
+fn is_integer(t: &str) -> bool {
+    let digits = t.strip_prefix(['-', '+']).unwrap_or(t);
+    !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit())
+}
+
+fn integer(t: &str) -> Result<i32, String> {
+    match t.parse::<i32>() {
+        Ok(v) => Ok(v),
+        Err(_) if is_integer(t) => Err(format!("integer out of range: `{}`", Shown(t))),
+        _ => Err(format!("bad integer `{}`", Shown(t))),
+    }
+}
+
+/// A rectangle width or height: an `i32` that is not negative.
+fn extent(t: &str, what: &str) -> Result<u32, String> {
+    let v = integer(t)?;
+    u32::try_from(v).map_err(|_| format!("negative {what} `{}`", Shown(t)))
+}
+
+fn vertex(x: &str, y: &str) -> Result<Vertex, String> {
+    Vertex::parse(x, y).map_err(|e| {
+        // Name the offending token: `x` if it fails on its own, else `y`.
+        let (e, t) = match Vertex::parse(x, "0") {
+            Err(ex) => (ex, x),
+            Ok(_) => (e, y),
+        };
+        match e {
+            ParseCoordinateError::OutOfRange => format!("coordinate out of range: `{}`", Shown(t)),
+            _ => format!("bad number `{}`", Shown(t)),
+        }
+    })
+}
+
+fn colour(t: &str) -> Result<Rgb888, String> {
+    let bad = || format!("bad colour `{}`", Shown(t));
+    let hex = t.strip_prefix('#').ok_or_else(bad)?;
+    if hex.len() != 6 || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+        return Err(bad());
+    }
+    let channel = |i: usize| u8::from_str_radix(&hex[i..i + 2], 16).map_err(|_| bad());
+    Ok(Rgb888::new(channel(0)?, channel(2)?, channel(4)?))
+}
+
+/// A token quoted in an error message, with control characters escaped so
+/// that the message stays on one line.
+struct Shown<'a>(&'a str);
+
+impl fmt::Display for Shown<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use fmt::Write;
+        for c in self.0.chars() {
+            if c.is_control() {
+                write!(f, "{}", c.escape_default())?;
+            } else {
+                f.write_char(c)?;
+            }
+        }
+        Ok(())
+    }
+}

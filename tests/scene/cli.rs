@@ -1,0 +1,245 @@
+//! The `render` command line, through `embedded_raster::sim::cli::run`.
+
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use embedded_raster::sim::cli;
+
+use super::decode_png;
+
+/// A fresh path in the temp directory; removed on drop.
+struct Temp(PathBuf);
+
+impl Temp {
+    fn new(name: &str) -> Self {
+        static NEXT: AtomicUsize = AtomicUsize::new(0);
+        let n = NEXT.fetch_add(1, Ordering::Relaxed);
+        let path = std::env::temp_dir().join(format!(
+            "embedded-raster-scene-test-{}-{n}-{name}",
+            std::process::id()
+        ));
+        let _ = std::fs::remove_file(&path);
+        Self(path)
+    }
+
+    fn with(name: &str, contents: &str) -> Self {
+        let t = Self::new(name);
+        std::fs::write(&t.0, contents).unwrap();
+        t
+    }
+
+    fn arg(&self) -> String {
+        self.0.to_str().unwrap().to_string()
+    }
+}
+
+impl Drop for Temp {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+/// Runs the command line: `(exit code, stdout, stderr)`.
+fn run(args: &[&str]) -> (i32, String, String) {
+    let (mut out, mut err) = (Vec::new(), Vec::new());
+    let code = cli::run(args, &mut out, &mut err);
+    (
+        code,
+        String::from_utf8(out).unwrap(),
+        String::from_utf8(err).unwrap(),
+    )
+}
+
+const SCENE: &str = "# test scene\n\
+                     size 6 4\n\
+                     clear #102030\n\
+                     rect 1 1 2 2 #FF0000\n\
+                     tri 3 0 6 0 6 3 #00ff00\n";
+
+#[test]
+fn cli_writes_png_counts_and_stats() {
+    let scene = Temp::with("ok.scene", SCENE);
+    let png_file = Temp::new("ok.png");
+    let pgm_file = Temp::new("ok.pgm");
+    let (code, out, err) = run(&[
+        &scene.arg(),
+        "-o",
+        &png_file.arg(),
+        "--counts",
+        &pgm_file.arg(),
+        "--stats",
+    ]);
+    assert_eq!((code, err.as_str()), (0, ""));
+
+    // The image.
+    let (w, h, rgb) = decode_png(&std::fs::read(&png_file.0).unwrap());
+    assert_eq!((w, h), (6, 4));
+    let at = |x: usize, y: usize| &rgb[(y * 6 + x) * 3..][..3];
+    assert_eq!(at(0, 0), [0x10, 0x20, 0x30]);
+    assert_eq!(at(1, 1), [0xff, 0, 0]);
+    assert_eq!(at(2, 2), [0xff, 0, 0]);
+    assert_eq!(at(3, 2), [0x10, 0x20, 0x30]);
+    // The triangle lights centres with x - y >= 3: the diagonal is its left
+    // edge.
+    let green = [0, 0xff, 0];
+    assert_eq!(at(3, 0), green);
+    assert_eq!(at(5, 0), green);
+    assert_eq!(at(4, 1), green);
+    assert_eq!(at(5, 2), green);
+    assert_eq!(at(3, 1), [0x10, 0x20, 0x30]);
+    assert_eq!(at(4, 2), [0x10, 0x20, 0x30]);
+    assert_eq!(at(5, 3), [0x10, 0x20, 0x30]);
+
+    // The counts, against the same expectation.
+    let pgm = std::fs::read(&pgm_file.0).unwrap();
+    let header = b"P5\n6 4\n255\n";
+    assert_eq!(&pgm[..header.len()], header);
+    #[rustfmt::skip]
+    let counts: [u8; 24] = [
+        1, 1, 1, 2, 2, 2,
+        1, 2, 2, 1, 2, 2,
+        1, 2, 2, 1, 1, 2,
+        1, 1, 1, 1, 1, 1,
+    ];
+    assert_eq!(&pgm[header.len()..], counts);
+
+    // The stats: one JSON object on one line.
+    assert_eq!(out.lines().count(), 1, "{out}");
+    let json = out.trim_end();
+    let prefix = r#"{"primitives":3,"pixels_written":34,"raster_seconds":"#;
+    assert!(json.starts_with(prefix) && json.ends_with('}'), "{json}");
+    let seconds: f64 = json[prefix.len()..json.len() - 1].parse().unwrap();
+    assert!((0.0..10.0).contains(&seconds), "{json}");
+}
+
+#[test]
+fn cli_without_options_writes_only_the_png() {
+    let scene = Temp::with("plain.scene", "size 3 2\nclear #FFFFFF\n");
+    let png_file = Temp::new("plain.png");
+    let (code, out, err) = run(&[&scene.arg(), "--output", &png_file.arg()]);
+    assert_eq!((code, out.as_str(), err.as_str()), (0, "", ""));
+    let (w, h, rgb) = decode_png(&std::fs::read(&png_file.0).unwrap());
+    assert_eq!((w, h, rgb), (3, 2, vec![255; 18]));
+}
+
+#[test]
+fn cli_bad_scene_reports_one_line_and_writes_nothing() {
+    let cases = [
+        (
+            "size 8 8\nclear #000000\ngtri 0 0 #ff0000 8 0 #00ff00 0 8 #0000ff\n",
+            3,
+            "unknown command `gtri`",
+        ),
+        (
+            "size 8 8\ntri 0 0 1 1 2 #ffffff\n",
+            2,
+            "`tri` takes 7 arguments, got 6",
+        ),
+        (
+            "size 8 8\n\n\ntri 0 0 1x 1 2 2 #ffffff\n",
+            4,
+            "bad number `1x`",
+        ),
+        (
+            "size 8 8\ntri 0 0 600000 1 2 2 #ffffff\n",
+            2,
+            "coordinate out of range: `600000`",
+        ),
+        ("size 8 8\nclear #12345\n", 2, "bad colour `#12345`"),
+        ("clear #123456\nsize 8 8\n", 1, "`size` must come first"),
+        (
+            "size 0 8\n",
+            1,
+            "size out of range: `0` (must be 1 to 4096)",
+        ),
+        ("# nothing\n", 1, "missing `size` command"),
+        // An error after many good lines still writes nothing.
+        (
+            "size 8 8\nclear #000000\nrect 0 0 4 4 #ffffff\npoly nonzero #ffffff 0 0 4 0 0 4\n",
+            4,
+            "unknown command `poly`",
+        ),
+    ];
+    for (text, line, message) in cases {
+        let scene = Temp::with("bad.scene", text);
+        let png_file = Temp::new("bad.png");
+        let pgm_file = Temp::new("bad.pgm");
+        let (code, out, err) = run(&[
+            &scene.arg(),
+            "-o",
+            &png_file.arg(),
+            "--counts",
+            &pgm_file.arg(),
+            "--stats",
+        ]);
+        assert_ne!(code, 0, "{text}");
+        assert_eq!(out, "", "{text}");
+        assert_eq!(
+            err,
+            format!("{}:{line}: {message}\n", scene.arg()),
+            "{text}"
+        );
+        assert!(!png_file.0.exists(), "{text}");
+        assert!(!pgm_file.0.exists(), "{text}");
+    }
+
+    // Invalid UTF-8 is reported on its line.
+    let scene = Temp::new("utf8.scene");
+    std::fs::write(&scene.0, b"size 8 8\nclear #000000\nrect \xff\n").unwrap();
+    let png_file = Temp::new("utf8.png");
+    let (code, _, err) = run(&[&scene.arg(), "-o", &png_file.arg()]);
+    assert_eq!(code, 1);
+    assert_eq!(err, format!("{}:3: not valid UTF-8\n", scene.arg()));
+    assert!(!png_file.0.exists());
+}
+
+#[test]
+fn cli_io_errors_are_one_line() {
+    let missing = Temp::new("missing.scene");
+    let png_file = Temp::new("missing.png");
+    let (code, out, err) = run(&[&missing.arg(), "-o", &png_file.arg()]);
+    assert_eq!((code, out.as_str()), (1, ""));
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with(&format!("{}: cannot read: ", missing.arg())),
+        "{err}"
+    );
+    assert!(!png_file.0.exists());
+
+    // An output in a directory that does not exist.
+    let scene = Temp::with("io.scene", "size 2 2\n");
+    let bad_out = missing.0.join("out.png");
+    let (code, _, err) = run(&[&scene.arg(), "-o", bad_out.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("cannot write"), "{err}");
+}
+
+#[test]
+fn cli_usage() {
+    let (code, out, err) = run(&["--help"]);
+    assert_eq!((code, err.as_str()), (0, ""));
+    assert!(out.starts_with("usage: render SCENE -o OUT.png"), "{out}");
+
+    let scene = Temp::with("usage.scene", "size 2 2\n");
+    let png_file = Temp::new("usage.png");
+    let s = scene.arg();
+    let p = png_file.arg();
+    for args in [
+        vec![],
+        vec![s.as_str()],
+        vec!["-o", p.as_str()],
+        vec![s.as_str(), "-o"],
+        vec![s.as_str(), "-o", p.as_str(), "--counts"],
+        vec![s.as_str(), "-o", p.as_str(), "--bogus"],
+        vec![s.as_str(), "-o", p.as_str(), "-o", p.as_str()],
+        vec![s.as_str(), s.as_str(), "-o", p.as_str()],
+    ] {
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}");
+        assert_eq!(out, "", "{args:?}");
+        assert!(err.starts_with("render: "), "{args:?}: {err}");
+        assert!(err.contains("usage: render SCENE"), "{args:?}: {err}");
+        assert!(!png_file.0.exists(), "{args:?}");
+    }
+}
