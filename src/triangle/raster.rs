@@ -58,8 +58,14 @@
 //! walk starts each row where the previous span started, moves left or right
 //! by one pixel at a time to the new span (a failing edge tells which way,
 //! and a row is left as soon as it is known to be empty), then walks right
-//! to the end of the span and leaves the row there. Work per row is the span
-//! length plus the change of its start, not the width of the bounding box.
+//! to the end of the span and leaves the row there. Walking over lit pixels
+//! gallops: because they form one interval, a lit pixel 16 steps away means
+//! all 16 are lit, so the walk takes strides of 16 and narrows the last
+//! one down with 8, 4, 2 and 1, every probe the same one-comparison test.
+//! Work per row is about a sixteenth of the span plus the change of its
+//! start, not the width of the bounding box. (Strides are used when
+//! `16 A_k` fits the stepping type, which it does except for edges taller
+//! than 32768 px in the 32-bit loop.)
 
 use core::ops::{Add, BitOr, Mul, Shr, Sub};
 
@@ -269,7 +275,12 @@ struct Stepper<T> {
     bound_left: u8,
     /// Edges with `A_k < 0`: failing, the span lies to the left.
     bound_right: u8,
+    /// `[16, 8, 4, 2] * A_k`, when they fit in `T`, for galloping.
+    strides: Option<[[T; 3]; 4]>,
 }
+
+/// Galloping strides in pixels, largest first, for [`Stepper::strides`].
+const STRIDES: [i32; 4] = [16, 8, 4, 2];
 
 impl<T: Step> Stepper<T> {
     /// `None` if some value `F_k` takes over the scan rectangle (its
@@ -292,12 +303,24 @@ impl<T: Step> Stepper<T> {
             bound_left |= u8::from(s.a[k] > 0) << k;
             bound_right |= u8::from(s.a[k] < 0) << k;
         }
+        let stride = |n: i32| -> Option<[T; 3]> {
+            let mut d = [T::ZERO; 3];
+            for k in 0..3 {
+                d[k] = T::from_i64(s.a[k] * i64::from(n))?;
+            }
+            Some(d)
+        };
+        let strides = match STRIDES.map(stride) {
+            [Some(d16), Some(d8), Some(d4), Some(d2)] => Some([d16, d8, d4, d2]),
+            _ => None,
+        };
         Some(Self {
             a,
             b,
             f,
             bound_left,
             bound_right,
+            strides,
         })
     }
 
@@ -324,16 +347,11 @@ impl<T: Step> Stepper<T> {
     fn find_span(&mut self, x: &mut i32, last: i32) -> Option<(i32, i32)> {
         let failing = negative(self.f);
         if failing == 0 {
-            // Inside: back up to the start, then walk to the end.
-            while *x > 0 {
-                let g = sub(self.f, self.a);
-                if !inside(g) {
-                    break;
-                }
-                self.f = g;
-                *x -= 1;
-            }
-            Some((*x, self.walk_to_end(*x, last)))
+            // Inside: back up to the start, then on to the end.
+            let (f, back) = self.extend(self.f, *x, true);
+            self.f = f;
+            *x -= back;
+            Some((*x, *x + self.extend(self.f, last - *x, false).1))
         } else if failing & self.bound_left == failing {
             // Every failing edge bounds the span from the left: go right.
             loop {
@@ -344,7 +362,7 @@ impl<T: Step> Stepper<T> {
                 self.f = add(self.f, self.a);
                 let failing = negative(self.f);
                 if failing == 0 {
-                    return Some((*x, self.walk_to_end(*x, last)));
+                    return Some((*x, *x + self.extend(self.f, last - *x, false).1));
                 }
                 if failing & self.bound_right != 0 {
                     return None;
@@ -368,14 +386,9 @@ impl<T: Step> Stepper<T> {
                 }
             }
             let end = *x;
-            while *x > 0 {
-                let g = sub(self.f, self.a);
-                if !inside(g) {
-                    break;
-                }
-                self.f = g;
-                *x -= 1;
-            }
+            let (f, back) = self.extend(self.f, *x, true);
+            self.f = f;
+            *x -= back;
             Some((*x, end))
         } else {
             // A horizontal edge fails, or the span would have to lie on
@@ -384,18 +397,52 @@ impl<T: Step> Stepper<T> {
         }
     }
 
-    /// The last inside column of the span that starts at `start`.
-    fn walk_to_end(&self, start: i32, last: i32) -> i32 {
-        let mut g = self.f;
-        let mut end = start;
-        while end < last {
-            g = add(g, self.a);
-            if !inside(g) {
+    /// From an inside pixel with edge values `g`, moves right (or left if
+    /// `back`) while still inside, at most `room` pixels; returns the values
+    /// there and the distance moved.
+    ///
+    /// Lit pixels on a row form one interval, so if the pixel `n` steps
+    /// away is inside, so is every pixel in between: after probing one
+    /// step, the walk gallops in strides of 16, narrows down with 8, 4 and
+    /// 2, and ends with single steps, each a one-comparison test of the
+    /// stepped values. It never
+    /// steps beyond `room`, so values stay inside the checked range.
+    #[inline(always)]
+    fn extend(&self, mut g: [T; 3], room: i32, back: bool) -> ([T; 3], i32) {
+        let step = |g: [T; 3], d: [T; 3]| if back { sub(g, d) } else { add(g, d) };
+        // One probe first: a span's start often moves by 0 or 1 pixel.
+        if room == 0 || !inside(step(g, self.a)) {
+            return (g, 0);
+        }
+        let mut n = 0;
+        if let Some([d16, d8, d4, d2]) = self.strides {
+            while room - n >= STRIDES[0] {
+                let t = step(g, d16);
+                if !inside(t) {
+                    break;
+                }
+                g = t;
+                n += STRIDES[0];
+            }
+            for (len, d) in [(STRIDES[1], d8), (STRIDES[2], d4), (STRIDES[3], d2)] {
+                if room - n >= len {
+                    let t = step(g, d);
+                    if inside(t) {
+                        g = t;
+                        n += len;
+                    }
+                }
+            }
+        }
+        while n < room {
+            let t = step(g, self.a);
+            if !inside(t) {
                 break;
             }
-            end += 1;
+            g = t;
+            n += 1;
         }
-        end
+        (g, n)
     }
 }
 
