@@ -69,6 +69,11 @@ mod span;
 mod triangle;
 mod vertex;
 
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
+
 pub use error::CoordinateOutOfRange;
 pub use fixed::types::I20F12;
 pub use framebuffer::Framebuffer;

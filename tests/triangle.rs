@@ -476,3 +476,42 @@ fn drawable_sends_one_clipped_fill_solid_per_row() {
     // the target have pixels, one span each.
     assert_eq!(d.fills, 64 - 13);
 }
+
+/// embedded-graphics' own mock display panics on overdraw and on writes
+/// outside its 64 x 64 area. A mesh covering more than that area draws on it
+/// cleanly and lights every pixel.
+#[test]
+fn draws_on_embedded_graphics_mock_display() {
+    use embedded_graphics::mock_display::MockDisplay;
+
+    let mut display = MockDisplay::<Rgb565>::new();
+    // An 8 x 8 grid of sheared cells spanning (-9.3, -7.1) to (89.3, 85.9).
+    let p = |i: i32, j: i32| {
+        Vertex::try_from_num(
+            f64::from(i) * 12.33 - 9.3 + f64::from(j) * 0.7,
+            f64::from(j) * 11.61 - 7.1,
+        )
+        .unwrap()
+    };
+    for j in 0..8 {
+        for i in 0..8 {
+            let (a, b, c, d) = (p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1));
+            Triangle::new(a, b, c)
+                .fill(Rgb565::CSS_ORANGE)
+                .draw(&mut display)
+                .unwrap();
+            Triangle::new(a, c, d)
+                .fill(Rgb565::CSS_TEAL)
+                .draw(&mut display)
+                .unwrap();
+        }
+    }
+    for y in 0..64 {
+        for x in 0..64 {
+            assert!(
+                display.get_pixel(Point::new(x, y)).is_some(),
+                "pixel ({x}, {y}) is a gap"
+            );
+        }
+    }
+}

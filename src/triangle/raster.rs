@@ -304,11 +304,8 @@ impl<T: Step> Stepper<T> {
             bound_right |= u8::from(s.a[k] < 0) << k;
         }
         let stride = |n: i32| -> Option<[T; 3]> {
-            let mut d = [T::ZERO; 3];
-            for k in 0..3 {
-                d[k] = T::from_i64(s.a[k] * i64::from(n))?;
-            }
-            Some(d)
+            let d = |k: usize| T::from_i64(s.a[k] * i64::from(n));
+            Some([d(0)?, d(1)?, d(2)?])
         };
         let strides = match STRIDES.map(stride) {
             [Some(d16), Some(d8), Some(d4), Some(d2)] => Some([d16, d8, d4, d2]),
