@@ -148,6 +148,15 @@ impl Vertex {
     }
 }
 
+/// Shown as raw subpixel units, e.g. `Vertex(10240/4096, -3/4096)`.
+#[cfg(feature = "defmt")]
+impl defmt::Format for Vertex {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        let (x, y) = self.raw();
+        defmt::write!(f, "Vertex({=i32}/4096, {=i32}/4096)", x, y);
+    }
+}
+
 /// Converts a pixel to the vertex at its centre, `(x + 1/2, y + 1/2)`.
 ///
 /// # Errors

@@ -515,3 +515,34 @@ fn draws_on_embedded_graphics_mock_display() {
         }
     }
 }
+
+#[cfg(feature = "sim")]
+proptest! {
+    /// The same meshes drawn as `Drawable`s on the simulator's display:
+    /// one write per covered pixel, nothing outside the display, every
+    /// pixel through `fill_solid`.
+    #[test]
+    fn meshes_on_the_simulator_write_each_pixel_once((tris, (x0, y0, x1, y1)) in mesh()) {
+        use embedded_graphics_core::pixelcolor::Rgb888;
+        use embedded_raster::sim::SimDisplay;
+
+        // The mesh starts within 16 px of the origin and may begin left of
+        // or above it: the display clips that part.
+        let mut display = SimDisplay::new(140, 140, Rgb888::BLACK);
+        for t in &tris {
+            t.fill(Rgb888::WHITE).draw(&mut display).unwrap();
+        }
+        prop_assert_eq!(display.out_of_bounds_writes(), 0);
+        let stats = display.write_stats();
+        prop_assert_eq!((stats.draw_iter_pixels, stats.fill_contiguous_pixels), (0, 0));
+        prop_assert_eq!(stats.fill_solid_pixels, display.pixels_written());
+        for y in 0..140i64 {
+            for x in 0..140i64 {
+                let (px, py) = (x * 4096 + 2048, y * 4096 + 2048);
+                let inside = x0 <= px && px < x1 && y0 <= py && py < y1;
+                let count = display.write_count(Point::new(x as i32, y as i32));
+                prop_assert_eq!(count, Some(u32::from(inside)), "pixel ({}, {})", x, y);
+            }
+        }
+    }
+}

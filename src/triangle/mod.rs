@@ -42,6 +42,7 @@ use crate::{CoordinateOutOfRange, Span, Vertex};
 /// # Ok::<(), core::convert::Infallible>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Triangle {
     /// The three corners.
     pub vertices: [Vertex; 3],
