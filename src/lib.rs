@@ -63,6 +63,7 @@ extern crate std;
 mod clip;
 mod error;
 pub mod framebuffer;
+mod polygon;
 #[cfg(feature = "sim")]
 pub mod sim;
 mod span;
@@ -77,6 +78,7 @@ pub struct ReadmeDoctests;
 pub use error::CoordinateOutOfRange;
 pub use fixed::types::I20F12;
 pub use framebuffer::Framebuffer;
+pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError};
 pub use span::Span;
 pub use triangle::{FilledTriangle, StepWidth, Triangle};
 pub use vertex::{ParseCoordinateError, Vertex, SUBPIXEL_BITS};

@@ -131,6 +131,55 @@ pub fn reference_polygon(poly: &[Vertex], x0: i64, y0: i64, w: usize, h: usize) 
     g
 }
 
+/// The reference under a fill rule: lit where the winding number is odd
+/// (`even_odd`) or non-zero.
+pub fn reference_fill(
+    poly: &[Vertex],
+    even_odd: bool,
+    x0: i64,
+    y0: i64,
+    w: usize,
+    h: usize,
+) -> Grid {
+    let pts: Vec<_> = poly.iter().map(|&v| raw(v)).collect();
+    let mut g = Grid::new(x0, y0, w, h);
+    for j in 0..h as i64 {
+        for i in 0..w as i64 {
+            let wn = winding(&pts, centre(x0 + i, y0 + j));
+            if (even_odd && wn % 2 != 0) || (!even_odd && wn != 0) {
+                g.bump(x0 + i, y0 + j);
+            }
+        }
+    }
+    g
+}
+
+/// Adds one to every pixel of every span `for_each_span` yields, checking
+/// that spans are non-empty, inside the window, in row order and, within a
+/// row, left to right without overlap.
+pub fn add_spans_from<E: core::fmt::Debug>(
+    g: &mut Grid,
+    for_each_span: impl FnOnce(&Rectangle, &mut dyn FnMut(Span) -> Result<(), E>) -> Result<(), E>,
+) {
+    let mut last: Option<(i32, i32)> = None;
+    let clip = g.clip();
+    for_each_span(&clip, &mut |s: Span| {
+        assert!(s.x_start < s.x_end, "empty span {s:?}");
+        if let Some((y, x_end)) = last {
+            assert!(
+                s.y > y || (s.y == y && s.x_start > x_end),
+                "spans out of order at {s:?}"
+            );
+        }
+        last = Some((s.y, s.x_end));
+        for x in s.x_start..s.x_end {
+            g.bump(i64::from(x), i64::from(s.y));
+        }
+        Ok(())
+    })
+    .unwrap();
+}
+
 pub fn reference_triangle(t: &Triangle, x0: i64, y0: i64, w: usize, h: usize) -> Grid {
     reference_polygon(&t.vertices, x0, y0, w, h)
 }
