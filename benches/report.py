@@ -1,37 +1,60 @@
 #!/usr/bin/env python3
-"""Prints the Markdown table of BENCHMARKS.md from criterion's results.
+"""Prints a Markdown table of BENCHMARKS.md from criterion's results.
 
-Run after `cargo bench --bench triangles`; reads the median of each
-benchmark from target/criterion/<group>/<bench>/<n>/new/estimates.json.
+    python3 benches/report.py [triangles|polygons] [TARGET_DIR]
+
+Run after `cargo bench --bench NAME`; reads the median of each benchmark
+from TARGET_DIR/criterion/<group>/<bench>/.../new/estimates.json.
 """
 import json
 import pathlib
 import sys
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent / "target" / "criterion"
-GROUPS = ["4 px", "16 px", "64 px", "240 px", "mesh 320x240"]
-PEERS = ["embedded-raster", "span fill", "embedded-graphics", "tiny-skia"]
+BENCH = sys.argv[1] if len(sys.argv) > 1 else "triangles"
+TARGET = pathlib.Path(sys.argv[2]) if len(sys.argv) > 2 else pathlib.Path(__file__).resolve().parent.parent / "target"
+ROOT = TARGET / "criterion"
+
+SUITES = {
+    # groups, (peer, column) pairs, ratio peers, unit
+    "triangles": (
+        ["4 px", "16 px", "64 px", "240 px", "mesh 320x240"],
+        ["embedded-raster", "span fill", "embedded-graphics", "tiny-skia"],
+        ["span fill", "embedded-graphics", "tiny-skia"],
+        "tri",
+    ),
+    "polygons": (
+        ["hexagons 18 px (x60)", "convex 24-gon 200 px", "concave star 24 vertices 200 px",
+         "pentagram 200 px (self-intersecting)"],
+        ["active edge table", "triangulate and fill", "fill triangulated once", "tiny-skia"],
+        ["triangulate and fill", "fill triangulated once", "tiny-skia"],
+        "set",
+    ),
+}
 
 
 def result(group, peer):
+    """(median ns, pixels, count in the id or 1), or None if not run."""
     d = ROOT / group / peer
-    runs = [p for p in d.iterdir() if (p / "new" / "estimates.json").exists()]
-    if len(runs) != 1:
-        sys.exit(f"expected one result under {d}")
-    run = runs[0]
-    median = json.loads((run / "new" / "estimates.json").read_text())["median"]["point_estimate"]
-    bench = json.loads((run / "new" / "benchmark.json").read_text())
-    return median, bench["throughput"]["Elements"], int(run.name)
+    runs = [p for p in d.rglob("new/estimates.json")] if d.exists() else []
+    if not runs:
+        return None
+    new = runs[0].parent
+    median = json.loads((new / "estimates.json").read_text())["median"]["point_estimate"]
+    bench = json.loads((new / "benchmark.json").read_text())
+    count = bench.get("value_str") or "1"
+    return median, bench["throughput"]["Elements"], int(count) if count.isdigit() else 1
 
 
-print("| triangles | px | " + " | ".join(f"{p} ns/tri" for p in PEERS)
-      + " | embedded-raster Mpx/s | time ÷ span fill | time ÷ embedded-graphics | time ÷ tiny-skia |")
-print("|---" * (2 + len(PEERS) + 4) + "|")
-for g in GROUPS:
-    r = {p: result(g, p) for p in PEERS}
-    ns, pixels, count = r["embedded-raster"]
-    row = [f"{g} (x{count})", f"{pixels / count:.0f}"]
-    row += [f"{r[p][0] / count:.0f}" for p in PEERS]
+groups, peers, ratios, unit = SUITES[BENCH]
+first = peers[0]
+print(f"| {BENCH} | px | " + " | ".join(f"{p} ns/{unit}" for p in peers)
+      + f" | {first} Mpx/s | " + " | ".join(f"time ÷ {p}" for p in ratios) + " |")
+print("|---" * (3 + len(peers) + len(ratios)) + "|")
+for g in groups:
+    r = {p: result(g, p) for p in peers}
+    ns, pixels, count = r[first]
+    row = [g if count == 1 else f"{g} (x{count})", f"{pixels / count:.0f}"]
+    row += ["-" if r[p] is None else f"{r[p][0] / count:.0f}" for p in peers]
     row.append(f"{pixels / ns * 1e3:.0f}")
-    row += [f"{ns / r[p][0]:.2f}x" for p in ["span fill", "embedded-graphics", "tiny-skia"]]
+    row += ["-" if r[p] is None else f"{ns / r[p][0]:.2f}x" for p in ratios]
     print("| " + " | ".join(row) + " |")

@@ -12,6 +12,8 @@
 //! | [`Vertex`] | 20.12 fixed-point positions (12 fractional bits) |
 //! | [`Triangle`], [`FilledTriangle`] | the exact edge-equation triangle rasterizer and its [`Drawable`] |
 //! | [`Span`] | the horizontal runs every filled shape is rasterized into |
+//! | [`line`](mod@line) | [`Line`], [`Polyline`] and their styles: exact Bresenham lines between any `i32` pixels, clipped before stepping (tie rule: the smaller coordinate), emitted as [`Run`]s; [`LineAlgorithm`] variants (DDA, naive); thick lines as two triangles |
+//! | [`Polygon`], [`FilledPolygon`], [`FillRule`] | the exact active-edge-table fill (even-odd and non-zero) with `heapless` storage of a chosen capacity, ear-clipping and fan triangulation, exact simple and convex tests |
 //! | [`framebuffer`] | [`Framebuffer`], an owned const-sized [`DrawTarget`] for Rgb565 (both byte orders), Rgb888, Gray8 and 1-bit |
 //! | `sim` (feature `sim`) | the host simulator: an overdraw-counting display, PNG export, the scene-file renderer |
 //!
@@ -63,6 +65,7 @@ extern crate std;
 mod clip;
 mod error;
 pub mod framebuffer;
+pub mod line;
 mod polygon;
 #[cfg(feature = "sim")]
 pub mod sim;
@@ -78,6 +81,7 @@ pub struct ReadmeDoctests;
 pub use error::CoordinateOutOfRange;
 pub use fixed::types::I20F12;
 pub use framebuffer::Framebuffer;
+pub use line::{Line, LineAlgorithm, Polyline, Run, StyledLine, StyledPolyline};
 pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError};
 pub use span::Span;
 pub use triangle::{FilledTriangle, StepWidth, Triangle};

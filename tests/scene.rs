@@ -6,6 +6,8 @@
 mod cli;
 #[path = "scene/display.rs"]
 mod display;
+#[path = "scene/line.rs"]
+mod line;
 
 use embedded_graphics_core::{
     pixelcolor::{Rgb888, RgbColor},
@@ -49,10 +51,6 @@ fn unknown_commands() {
     // exactly like any other word, whatever their arguments.
     for (word, args) in [
         ("gtri", "0 0 #ff0000 8 0 #00ff00 0 8 #0000ff"),
-        ("line", "0 0 7 7 #ffffff"),
-        ("polyline", "#ffffff 0 0 7 7 3 5"),
-        ("poly", "evenodd #ffffff 0 0 7 0 0 7"),
-        ("poly", ""),
         ("TRI", "0 0 1 0 0 1 #ffffff"),
         ("Size", "8 8"),
     ] {
@@ -492,4 +490,76 @@ fn render_stats_and_counts() {
         json.starts_with(r#"{"primitives":4,"pixels_written":155,"raster_seconds":"#),
         "{json}"
     );
+}
+
+#[test]
+fn poly_command_errors() {
+    let big: String = (0..1025).map(|k| format!(" {k} {}", k % 7)).collect();
+    let cases = [
+        (
+            "poly",
+            "`poly` takes a fill rule, a colour and at least 3 points, got 0 arguments".to_string(),
+        ),
+        (
+            "poly nonzero",
+            "`poly` takes a fill rule, a colour and at least 3 points, got 1 arguments".to_string(),
+        ),
+        (
+            "poly winding #ffffff 0 0 4 0 0 4",
+            "bad fill rule `winding` (evenodd or nonzero)".to_string(),
+        ),
+        (
+            "poly evenodd ffffff 0 0 4 0 0 4",
+            "bad colour `ffffff`".to_string(),
+        ),
+        (
+            "poly evenodd #ffffff 0 0 4 0 0",
+            "`poly` takes x y pairs, got 5 coordinates".to_string(),
+        ),
+        (
+            "poly nonzero #ffffff 0 0 4 0",
+            "a polygon needs at least 3 vertices, got 2".to_string(),
+        ),
+        (
+            "poly nonzero #ffffff 0 0 4 0 0 nan",
+            "bad number `nan`".to_string(),
+        ),
+        (
+            "poly nonzero #ffffff 0 0 4 0 0 524288",
+            "coordinate out of range: `524288`".to_string(),
+        ),
+        (
+            &*format!("poly nonzero #ffffff{big}"),
+            "polygon has 1025 vertices, over the capacity of 1024".to_string(),
+        ),
+    ];
+    for (line, message) in cases {
+        let text = format!("size 8 8\n{line}\n");
+        assert_eq!(error(&text), err(2, &message), "{line}");
+    }
+}
+
+#[test]
+fn poly_fill_rules() {
+    // A pentagram: its centre is wound twice.
+    let star = "16 1 25.4 29.9 0.8 12 31.2 12 6.6 29.9";
+    for (rule, centre_lit) in [("evenodd", false), ("nonzero", true)] {
+        let scene = parse_scene(&format!("size 32 32\npoly {rule} #ff0000 {star}\n")).unwrap();
+        let display = render_scene(&scene).display;
+        let red = Some(Rgb888::new(255, 0, 0));
+        assert_eq!(
+            display.pixel(Point::new(16, 18)) == red,
+            centre_lit,
+            "{rule}"
+        );
+        assert_eq!(display.pixel(Point::new(16, 5)), red, "{rule}");
+        assert_eq!(
+            display.pixel(Point::new(1, 1)),
+            Some(Rgb888::BLACK),
+            "{rule}"
+        );
+        // Spans never overlap: every pixel is written at most once.
+        assert!(display.counts().iter().all(|&c| c <= 1), "{rule}");
+        assert_eq!(display.out_of_bounds_writes(), 0);
+    }
 }

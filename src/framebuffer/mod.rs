@@ -436,6 +436,23 @@ impl<F, const W: usize, const H: usize, const N: usize> PartialEq for Framebuffe
 
 impl<F, const W: usize, const H: usize, const N: usize> Eq for Framebuffer<F, W, H, N> {}
 
+/// Like `Debug`: the format and dimensions, not the pixels.
+#[cfg(feature = "defmt")]
+impl<F: defmt::Format + Default, const W: usize, const H: usize, const N: usize> defmt::Format
+    for Framebuffer<F, W, H, N>
+{
+    fn format(&self, f: defmt::Formatter<'_>) {
+        defmt::write!(
+            f,
+            "Framebuffer {{ format: {}, width: {=usize}, height: {=usize}, bytes: {=usize} }}",
+            F::default(),
+            W,
+            H,
+            N
+        );
+    }
+}
+
 impl<F, const W: usize, const H: usize, const N: usize> fmt::Debug for Framebuffer<F, W, H, N> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("Framebuffer")

@@ -6,7 +6,8 @@
 //! table and active edge list live in `heapless` storage on the stack whose
 //! capacity `N` (vertices) the caller picks: a [`Polygon<N>`](Polygon) of
 //! more than `N` vertices cannot be made, so drawing never runs out of room.
-//! The storage is about 80 bytes per vertex of capacity.
+//! The storage is 84 bytes per vertex of capacity on a 32-bit target (an
+//! 80-byte edge record and a `usize` slot in the active list).
 //!
 //! Pixels follow the crate's sampling rule, as triangles do: a pixel is lit
 //! iff its centre nudged by `(e, e^2)` has a non-zero winding number

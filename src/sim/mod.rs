@@ -40,4 +40,4 @@ mod scene;
 
 pub use display::{SimDisplay, WriteStats};
 pub use render::{render_scene, RenderStats, Rendered};
-pub use scene::{parse_scene, Command, Scene, SceneError, MAX_SCENE_SIDE};
+pub use scene::{parse_scene, Command, Scene, SceneError, MAX_SCENE_SIDE, SCENE_POLYGON_CAPACITY};

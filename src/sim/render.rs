@@ -12,8 +12,9 @@ use embedded_graphics_core::{
     Drawable,
 };
 
-use super::{Command, Scene, SimDisplay};
+use super::{scene::SCENE_POLYGON_CAPACITY, Command, Scene, SimDisplay};
 use crate::clip::Bounds;
+use crate::{Polygon, Polyline};
 
 /// The part of `rect` inside `clip`, or `None` if there is none.
 fn clip(rect: &Rectangle, clip: &Rectangle) -> Option<Rectangle> {
@@ -30,8 +31,9 @@ impl Command {
     /// `rect` clipped to the target's bounding box (without overflow, for
     /// any position and size) and then, unless nothing is left, with one
     /// [`DrawTarget::fill_solid`] call, `tri` as a
-    /// [`FilledTriangle`](crate::FilledTriangle). Nothing is drawn outside
-    /// the target.
+    /// [`FilledTriangle`](crate::FilledTriangle), `line` and `polyline` as
+    /// 1-pixel Bresenham [`Line`](crate::Line) and
+    /// [`Polyline`] strokes. Nothing is drawn outside the target.
     ///
     /// # Errors
     ///
@@ -52,13 +54,23 @@ impl Command {
     /// # Ok::<(), embedded_raster::sim::SceneError>(())
     /// ```
     pub fn draw<D: DrawTarget<Color = Rgb888>>(&self, target: &mut D) -> Result<(), D::Error> {
-        match *self {
-            Self::Clear(color) => target.clear(color),
-            Self::Rect(rect, color) => match clip(&rect, &target.bounding_box()) {
-                Some(visible) => target.fill_solid(&visible, color),
+        match self {
+            Self::Clear(color) => target.clear(*color),
+            Self::Rect(rect, color) => match clip(rect, &target.bounding_box()) {
+                Some(visible) => target.fill_solid(&visible, *color),
                 None => Ok(()),
             },
-            Self::Tri(triangle, color) => triangle.fill(color).draw(target),
+            Self::Tri(triangle, color) => triangle.fill(*color).draw(target),
+            Self::Line(line, color) => line.stroke(*color).draw(target),
+            Self::Polyline(points, color) => Polyline::new(points).stroke(*color).draw(target),
+            Self::Poly(vertices, rule, color) => {
+                match Polygon::<SCENE_POLYGON_CAPACITY>::new(vertices) {
+                    Ok(polygon) => polygon.fill(*color).with_rule(*rule).draw(target),
+                    // The parser checked the vertex count; a hand-made
+                    // command with too few or too many draws nothing.
+                    Err(_) => Ok(()),
+                }
+            }
         }
     }
 }

@@ -8,6 +8,8 @@
 //! clear #RRGGBB
 //! rect X Y W H #RRGGBB
 //! tri X0 Y0 X1 Y1 X2 Y2 #RRGGBB
+//! line X0 Y0 X1 Y1 #RRGGBB
+//! polyline #RRGGBB X0 Y0 X1 Y1 ...
 //! ```
 
 use core::fmt;
@@ -20,7 +22,7 @@ use embedded_graphics_core::{
     primitives::Rectangle,
 };
 
-use crate::{ParseCoordinateError, Triangle, Vertex};
+use crate::{FillRule, Line, ParseCoordinateError, Polygon, Triangle, Vertex};
 
 /// Largest width and height a scene may have.
 pub const MAX_SCENE_SIDE: u32 = 4096;
@@ -93,7 +95,7 @@ impl Scene {
 /// );
 /// # Ok::<(), embedded_raster::sim::SceneError>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Command {
     /// `clear #RRGGBB`: fill the whole framebuffer.
@@ -102,7 +104,18 @@ pub enum Command {
     Rect(Rectangle, Rgb888),
     /// `tri X0 Y0 X1 Y1 X2 Y2 #RRGGBB`: fill a triangle.
     Tri(Triangle, Rgb888),
+    /// `line X0 Y0 X1 Y1 #RRGGBB`: a 1-pixel line between two pixels.
+    Line(Line, Rgb888),
+    /// `polyline #RRGGBB X0 Y0 X1 Y1 ...`: connected 1-pixel lines through
+    /// two or more pixels, each joint lit once.
+    Polyline(Vec<Point>, Rgb888),
+    /// `poly evenodd|nonzero #RRGGBB X0 Y0 X1 Y1 ...`: a filled polygon of
+    /// 3 to [`SCENE_POLYGON_CAPACITY`] vertices, closed implicitly.
+    Poly(Vec<Vertex>, FillRule, Rgb888),
 }
+
+/// The most vertices a scene's `poly` may have; more is an error.
+pub const SCENE_POLYGON_CAPACITY: usize = 1024;
 
 /// Why a scene could not be parsed: a 1-based line number and a one-line,
 /// lowercase message.
@@ -115,9 +128,9 @@ pub enum Command {
 /// ```
 /// use embedded_raster::sim::parse_scene;
 ///
-/// let err = parse_scene("size 8 8\n\nline 0 0 7 7 #ffffff\n").unwrap_err();
+/// let err = parse_scene("size 8 8\n\ncircle 4 4 3 #ffffff\n").unwrap_err();
 /// assert_eq!(err.line, 3);
-/// assert_eq!(err.to_string(), "unknown command `line`");
+/// assert_eq!(err.to_string(), "unknown command `circle`");
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct SceneError {
@@ -145,7 +158,8 @@ impl std::error::Error for SceneError {}
 ///
 /// [`SceneError`] with the line of the first problem: a first command
 /// other than `size`, a second `size`, an unknown command, a wrong number
-/// of arguments, a bad integer, number or colour, a size outside
+/// of arguments (or an odd number of `polyline` coordinates), a bad
+/// integer, number or colour, a size outside
 /// `1..=4096`, a negative rectangle size, a coordinate out of range, or no
 /// `size` at all.
 ///
@@ -220,6 +234,66 @@ fn parse_command(word: &str, args: &[&str]) -> Result<Command, String> {
             let [x0, y0, x1, y1, x2, y2, c] = arity::<7>(word, args)?;
             let triangle = Triangle::new(vertex(x0, y0)?, vertex(x1, y1)?, vertex(x2, y2)?);
             Ok(Command::Tri(triangle, colour(c)?))
+        }
+        "line" => {
+            let [x0, y0, x1, y1, c] = arity::<5>(word, args)?;
+            let start = Point::new(integer(x0)?, integer(y0)?);
+            let end = Point::new(integer(x1)?, integer(y1)?);
+            Ok(Command::Line(Line::new(start, end), colour(c)?))
+        }
+        "polyline" => {
+            let (c, coordinates) = match args {
+                [c, rest @ ..] if rest.len() >= 4 => (c, rest),
+                _ => {
+                    return Err(format!(
+                        "`polyline` takes a colour and at least 2 points, got {} arguments",
+                        args.len()
+                    ))
+                }
+            };
+            if coordinates.len() % 2 != 0 {
+                return Err(format!(
+                    "`polyline` takes x y pairs, got {} coordinates",
+                    coordinates.len()
+                ));
+            }
+            let color = colour(c)?;
+            let points = coordinates
+                .chunks_exact(2)
+                .map(|p| Ok(Point::new(integer(p[0])?, integer(p[1])?)))
+                .collect::<Result<Vec<_>, String>>()?;
+            Ok(Command::Polyline(points, color))
+        }
+        "poly" => {
+            let [rule, c, coordinates @ ..] = args else {
+                return Err(format!(
+                    "`poly` takes a fill rule, a colour and at least 3 points, got {} arguments",
+                    args.len()
+                ));
+            };
+            let rule = match *rule {
+                "evenodd" => FillRule::EvenOdd,
+                "nonzero" => FillRule::NonZero,
+                _ => {
+                    return Err(format!(
+                        "bad fill rule `{}` (evenodd or nonzero)",
+                        Shown(rule)
+                    ))
+                }
+            };
+            let color = colour(c)?;
+            if coordinates.len() % 2 != 0 {
+                return Err(format!(
+                    "`poly` takes x y pairs, got {} coordinates",
+                    coordinates.len()
+                ));
+            }
+            let vertices = coordinates
+                .chunks_exact(2)
+                .map(|p| vertex(p[0], p[1]))
+                .collect::<Result<Vec<_>, String>>()?;
+            Polygon::<SCENE_POLYGON_CAPACITY>::new(&vertices).map_err(|e| e.to_string())?;
+            Ok(Command::Poly(vertices, rule, color))
         }
         _ => Err(format!("unknown command `{}`", Shown(word))),
     }

@@ -185,6 +185,7 @@ impl Triangle {
 /// # Ok::<(), core::convert::Infallible>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct FilledTriangle<C> {
     /// The shape.
     pub triangle: Triangle,

@@ -155,9 +155,9 @@ fn cli_bad_scene_reports_one_line_and_writes_nothing() {
         ("# nothing\n", 1, "missing `size` command"),
         // An error after many good lines still writes nothing.
         (
-            "size 8 8\nclear #000000\nrect 0 0 4 4 #ffffff\npoly nonzero #ffffff 0 0 4 0 0 4\n",
+            "size 8 8\nclear #000000\nrect 0 0 4 4 #ffffff\npoly nonzero #ffffff 0 0 4 0\n",
             4,
-            "unknown command `poly`",
+            "a polygon needs at least 3 vertices, got 2",
         ),
     ];
     for (text, line, message) in cases {

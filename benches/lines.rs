@@ -1,0 +1,133 @@
+//! 1-pixel lines on a 320 x 240 Rgb565 framebuffer: this crate's exact
+//! Bresenham line, its DDA and naive variants, and embedded-graphics 0.8's
+//! `Line` with a 1-pixel stroke on the same framebuffer.
+//!
+//! `cargo bench --bench lines`; `benches/report_lines.py` turns the
+//! medians into the table in BENCHMARKS.md.
+
+use std::hint::black_box;
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use embedded_graphics::{
+    pixelcolor::Rgb565,
+    prelude::*,
+    primitives::{Line as EgLine, PrimitiveStyle, Rectangle},
+};
+use embedded_raster::{
+    framebuffer::{buffer_size, Rgb565Le},
+    Framebuffer, Line, LineAlgorithm,
+};
+
+const W: i32 = 320;
+const H: i32 = 240;
+type Fb = Framebuffer<Rgb565Le, 320, 240, { buffer_size::<Rgb565Le>(320, 240) }>;
+
+/// A deterministic pseudo-random sequence (xorshift64*).
+struct Rng(u64);
+
+impl Rng {
+    fn below(&mut self, n: i32) -> i32 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) % n as u64) as i32
+    }
+}
+
+/// 256 lines of 8 px (7 steps along the major axis) in every direction,
+/// anywhere on the screen.
+fn short() -> Vec<(Point, Point)> {
+    let mut rng = Rng(7);
+    (0..256)
+        .map(|i| {
+            let minor = rng.below(8);
+            let (mut dx, mut dy) = if i % 2 == 0 { (7, minor) } else { (minor, 7) };
+            if i & 2 != 0 {
+                dx = -dx;
+            }
+            if i & 4 != 0 {
+                dy = -dy;
+            }
+            let a = Point::new(8 + rng.below(W - 16), 8 + rng.below(H - 16));
+            (a, a + Point::new(dx, dy))
+        })
+        .collect()
+}
+
+/// 64 lines of 300 px across the screen (x-major, every slope from -0.8
+/// to 0.8, both directions).
+fn long() -> Vec<(Point, Point)> {
+    let mut rng = Rng(11);
+    (0..64)
+        .map(|i| {
+            let dy = rng.below(2 * 230 + 1) - 230;
+            let y0 = if dy >= 0 {
+                rng.below(H - dy)
+            } else {
+                -dy + rng.below(H + dy)
+            };
+            let a = Point::new(10, y0);
+            let b = Point::new(309, y0 + dy);
+            if i % 2 == 0 {
+                (a, b)
+            } else {
+                (b, a)
+            }
+        })
+        .collect()
+}
+
+fn bench_set(c: &mut Criterion, name: &str, lines: &[(Point, Point)]) {
+    let ours: Vec<Line> = lines.iter().map(|&(a, b)| Line::new(a, b)).collect();
+    let clip = Rectangle::new(Point::zero(), Size::new(W as u32, H as u32));
+    let mut pixels = 0u64;
+    for l in &ours {
+        l.for_each_run(&clip, |r| {
+            pixels += u64::from(r.len);
+            Ok::<(), ()>(())
+        })
+        .unwrap();
+    }
+    let mut g = c.benchmark_group(name);
+    // Per set; divide by the line count for ns/line.
+    g.throughput(Throughput::Elements(pixels));
+    let mut fb = Box::new(Fb::new());
+    for (id, algorithm) in [
+        ("bresenham", LineAlgorithm::Bresenham),
+        ("dda", LineAlgorithm::Dda),
+        ("naive", LineAlgorithm::Naive),
+    ] {
+        g.bench_function(BenchmarkId::new(id, ours.len()), |b| {
+            b.iter(|| {
+                for l in &ours {
+                    l.stroke(Rgb565::RED)
+                        .algorithm(algorithm)
+                        .draw(&mut *fb)
+                        .unwrap();
+                }
+                black_box(&fb);
+            })
+        });
+    }
+    let eg: Vec<_> = lines
+        .iter()
+        .map(|&(a, b)| EgLine::new(a, b).into_styled(PrimitiveStyle::with_stroke(Rgb565::GREEN, 1)))
+        .collect();
+    g.bench_function(BenchmarkId::new("embedded-graphics", ours.len()), |b| {
+        b.iter(|| {
+            for l in &eg {
+                l.draw(&mut *fb).unwrap();
+            }
+            black_box(&fb);
+        })
+    });
+    g.finish();
+}
+
+fn lines(c: &mut Criterion) {
+    bench_set(c, "lines 8 px", &short());
+    bench_set(c, "lines 300 px", &long());
+}
+
+criterion_group!(benches, lines);
+criterion_main!(benches);

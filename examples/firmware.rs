@@ -1,0 +1,79 @@
+//! Firmware: renders the built-in scene (`examples/common/builtin_scene.rs`)
+//! into a 320 x 240 Rgb565 framebuffer in static RAM on a Cortex-M, prints
+//! its checksum over semihosting and exits with success. A panic prints its
+//! message and exits with failure.
+//!
+//! Run it on QEMU's Cortex-M4 board (`.cargo/config.toml` is the runner):
+//!
+//! ```sh
+//! cargo run --release --target thumbv7em-none-eabihf --example firmware --features firmware
+//! ```
+//!
+//! Built for the host, it renders the same scene with the same code and
+//! prints the same line, for comparison.
+
+#![cfg_attr(target_arch = "arm", no_std, no_main)]
+
+#[path = "common/builtin_scene.rs"]
+mod builtin_scene;
+
+/// The line both sides print; CI compares the firmware's with the host's.
+#[cfg_attr(not(target_arch = "arm"), allow(dead_code))]
+const REPORT: &str = "scene 320x240 rgb565le fnv1a32=";
+
+/// Checks that the scene exercises both edge-stepping widths.
+fn check_step_widths() {
+    use embedded_raster::StepWidth;
+    let widths = (
+        builtin_scene::HUGE.step_width(&builtin_scene::SCREEN),
+        builtin_scene::TWIN.step_width(&builtin_scene::SCREEN),
+    );
+    assert_eq!(
+        widths,
+        (Some(StepWidth::Bits64), Some(StepWidth::Bits32)),
+        "edge paths"
+    );
+}
+
+#[cfg(target_arch = "arm")]
+mod target {
+    use cortex_m_rt::entry;
+    use cortex_m_semihosting::{debug, hprintln};
+
+    use super::builtin_scene::{self, SceneBuffer};
+
+    #[entry]
+    fn main() -> ! {
+        // cortex-m-rt turns this into a `&'static mut` (in .bss): no unsafe.
+        static mut FB: SceneBuffer = SceneBuffer::new();
+        super::check_step_widths();
+        let checksum = builtin_scene::render(FB);
+        hprintln!("{}0x{:08x}", super::REPORT, checksum);
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::nop();
+        }
+    }
+
+    #[panic_handler]
+    fn panic(info: &core::panic::PanicInfo) -> ! {
+        hprintln!("firmware panicked: {}", info);
+        debug::exit(debug::EXIT_FAILURE);
+        loop {
+            cortex_m::asm::nop();
+        }
+    }
+}
+
+/// On the host: the same rendering, the same line.
+#[cfg(not(target_arch = "arm"))]
+fn main() {
+    check_step_widths();
+    let mut fb = Box::new(builtin_scene::SceneBuffer::new());
+    let checksum = builtin_scene::render(&mut fb);
+    println!("{REPORT}0x{checksum:08x}");
+    eprintln!(
+        "(host build; the firmware runs with: cargo run --release --target \
+         thumbv7em-none-eabihf --example firmware --features firmware)"
+    );
+}

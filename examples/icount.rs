@@ -1,0 +1,457 @@
+//! Firmware: instruction counts per primitive on the Cortex-M4, printed
+//! over semihosting as tab-separated rows; `.ci/icount` runs it (twice,
+//! to check the numbers repeat) and turns them into the Markdown table in
+//! `BENCHMARKS.md`.
+//!
+//! # The counter
+//!
+//! QEMU runs with `-icount shift=7`: every instruction advances virtual
+//! time by exactly 2^7 = 128 ns, whatever the host does. SysTick counts
+//! the board's 25 MHz core clock in virtual time (40 ns a tick), so `n`
+//! instructions take `3.2 n` ticks, rounded to a whole tick; because a tick
+//! is shorter than an instruction, `round(ticks / 3.2)` recovers `n`
+//! exactly. Before measuring, the firmware checks this on a loop of a
+//! known number of instructions (`cortex_m::asm::delay`: two instructions
+//! an iteration) and stops with a failure if the count is not exact. These
+//! are instructions, not cycles: QEMU does not model pipeline stalls, wait
+//! states or the cost of a taken branch.
+//!
+//! Run: `.ci/icount` (or by hand: `cargo build --release --target
+//! thumbv7em-none-eabihf --example icount --features firmware`, then the
+//! runner of `.cargo/config.toml` with `-icount shift=7` added).
+
+#![cfg_attr(target_arch = "arm", no_std, no_main)]
+
+#[cfg(target_arch = "arm")]
+#[path = "common/builtin_scene.rs"]
+mod builtin_scene;
+
+#[cfg(target_arch = "arm")]
+mod target {
+    use core::hint::black_box;
+
+    use cortex_m::peripheral::{syst::SystClkSource, SYST};
+    use cortex_m_rt::entry;
+    use cortex_m_semihosting::{debug, hprintln};
+    use embedded_graphics_core::{
+        draw_target::DrawTarget,
+        geometry::{Dimensions, OriginDimensions, Point, Size},
+        pixelcolor::Rgb565,
+        primitives::Rectangle,
+        Drawable, Pixel,
+    };
+    use embedded_raster::{FillRule, Line, Polygon, StepWidth, StyledLine, Triangle, Vertex};
+
+    use super::builtin_scene::{self, SceneBuffer, HUGE, SCREEN, TWIN};
+
+    /// QEMU's `-icount shift`: 2^SHIFT ns of virtual time per instruction.
+    const SHIFT: u32 = 7;
+    /// SysTick's clock on mps2-an386: the 25 MHz core clock.
+    const SYSTICK_HZ: u64 = 25_000_000;
+
+    /// Instructions in `ticks` SysTick ticks: `ticks / (2^SHIFT ns * 25 MHz)`,
+    /// rounded to the nearest integer.
+    fn instructions(ticks: u32) -> u32 {
+        let den = (1u64 << SHIFT) * SYSTICK_HZ;
+        ((u64::from(ticks) * 1_000_000_000 + den / 2) / den) as u32
+    }
+
+    /// Counts the instructions a closure runs, less the measurement's own.
+    struct Counter {
+        syst: SYST,
+        overhead: u32,
+    }
+
+    impl Counter {
+        fn new(mut syst: SYST) -> Self {
+            syst.disable_interrupt();
+            syst.set_clock_source(SystClkSource::Core);
+            syst.set_reload(0x00FF_FFFF);
+            syst.clear_current();
+            syst.enable_counter();
+            let mut counter = Self { syst, overhead: 0 };
+            counter.overhead = counter.raw(&mut || {});
+            counter
+        }
+
+        /// Instructions from one read of the counter to the next around
+        /// `f` (a dynamic call, so the overhead is the same for every `f`).
+        #[inline(never)]
+        fn raw(&mut self, f: &mut dyn FnMut()) -> u32 {
+            // Restart from the reload value: 2^24 ticks (5.2 M instructions)
+            // before the counter wraps. Reloading sets COUNTFLAG; clear it.
+            self.syst.clear_current();
+            cortex_m::asm::delay(4);
+            let _ = self.syst.has_wrapped();
+            let t0 = SYST::get_current();
+            f();
+            let t1 = SYST::get_current();
+            assert!(
+                !self.syst.has_wrapped() && t1 <= t0,
+                "batch too long for the 24-bit SysTick"
+            );
+            instructions(t0 - t1)
+        }
+
+        fn count(&mut self, mut f: impl FnMut()) -> u32 {
+            self.raw(&mut f) - self.overhead
+        }
+    }
+
+    /// Checks the counter on loops of known length; panics (exit failure)
+    /// if it is off by even one instruction.
+    fn validate(counter: &mut Counter) {
+        let delay = |n: u32| move || cortex_m::asm::delay(black_box(n));
+        let short = counter.count(delay(1_000));
+        let long = counter.count(delay(301_000));
+        let again = counter.count(delay(301_000));
+        // delay(n) runs n + 1 iterations of `subs; bne`.
+        let expected = 2 * 300_000;
+        hprintln!(
+            "validate\tdelay(1000)={}\tdelay(301000)={}\tdifference={}\texpected={}",
+            short,
+            long,
+            long - short,
+            expected
+        );
+        assert_eq!(long - short, expected, "instruction counter is not exact");
+        assert_eq!(long, again, "instruction counter does not repeat");
+        // The loop plus a few instructions of call and setup.
+        let loop_only = 2 * 1_001;
+        assert!(
+            (loop_only..=loop_only + 16).contains(&short),
+            "delay(1000) = {short}"
+        );
+    }
+
+    /// A batch of primitives to measure.
+    #[derive(Clone, Copy)]
+    enum Batch<'a> {
+        Triangles(&'a [(Triangle, Rgb565)]),
+        Rects(&'a [Rectangle]),
+        Lines(&'a [StyledLine<Rgb565>]),
+        Polygons(&'a [(&'a [Vertex], FillRule)]),
+    }
+
+    impl Batch<'_> {
+        fn len(self) -> usize {
+            match self {
+                Batch::Triangles(ts) => ts.len(),
+                Batch::Rects(rs) => rs.len(),
+                Batch::Lines(ls) => ls.len(),
+                Batch::Polygons(ps) => ps.len(),
+            }
+        }
+
+        fn draw<D: DrawTarget<Color = Rgb565>>(self, target: &mut D) -> Result<(), D::Error> {
+            match self {
+                Batch::Triangles(ts) => ts.iter().try_for_each(|(t, c)| t.fill(*c).draw(target)),
+                Batch::Rects(rs) => rs.iter().try_for_each(|r| target.fill_solid(r, BLUE)),
+                Batch::Lines(ls) => ls.iter().try_for_each(|l| l.draw(target)),
+                Batch::Polygons(ps) => ps.iter().try_for_each(|&(v, rule)| {
+                    let polygon = Polygon::<12>::new(v).expect("at most 12 vertices");
+                    polygon.fill(BLUE).with_rule(rule).draw(target)
+                }),
+            }
+        }
+
+        /// The triangles' setup alone: [`Triangle::step_width`] runs it
+        /// (orientation, edge equations, the 32-bit range check).
+        fn setup(self) {
+            if let Batch::Triangles(ts) = self {
+                for (t, _) in ts {
+                    black_box(black_box(t).step_width(black_box(&SCREEN)));
+                }
+            }
+        }
+
+        /// The triangles' edge-stepping width.
+        fn width(self) -> &'static str {
+            let Batch::Triangles(ts) = self else {
+                return "-";
+            };
+            let w = |want| ts.iter().all(|(t, _)| t.step_width(&SCREEN) == Some(want));
+            match (w(StepWidth::Bits32), w(StepWidth::Bits64)) {
+                (true, _) => "32-bit",
+                (_, true) => "64-bit",
+                _ => "mixed",
+            }
+        }
+    }
+
+    const BLUE: Rgb565 = Rgb565::new(0, 40, 31);
+
+    /// A draw target that records the rectangles sent to `fill_solid`
+    /// (clipped to the screen, split into rows if `rows`), to replay them
+    /// as a plain span fill of the same pixels.
+    struct Recorder<'a> {
+        rects: &'a mut [Rectangle],
+        len: usize,
+        pixels: u32,
+        rows: bool,
+    }
+
+    impl Recorder<'_> {
+        fn push(&mut self, r: Rectangle) {
+            assert!(self.len < self.rects.len(), "recorder full");
+            self.rects[self.len] = r;
+            self.len += 1;
+        }
+    }
+
+    impl OriginDimensions for Recorder<'_> {
+        fn size(&self) -> Size {
+            SCREEN.size
+        }
+    }
+
+    impl DrawTarget for Recorder<'_> {
+        type Color = Rgb565;
+        type Error = core::convert::Infallible;
+
+        fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+            &mut self,
+            _: I,
+        ) -> Result<(), Self::Error> {
+            panic!("recorder: a primitive drew single pixels");
+        }
+
+        fn fill_solid(&mut self, area: &Rectangle, _: Rgb565) -> Result<(), Self::Error> {
+            let area = area.intersection(&self.bounding_box());
+            let Size { width, height } = area.size;
+            if width == 0 || height == 0 {
+                return Ok(());
+            }
+            self.pixels += width * height;
+            if self.rows {
+                for dy in 0..height as i32 {
+                    let top_left = area.top_left + Point::new(0, dy);
+                    self.push(Rectangle::new(top_left, Size::new(width, 1)));
+                }
+            } else {
+                self.push(area);
+            }
+            Ok(())
+        }
+    }
+
+    /// Measures drawing `batch` on the framebuffer, the triangles' setup,
+    /// and a plain `fill_solid` of the same pixels (the primitives' own
+    /// fill rectangles, or rows if `rows`); prints one row.
+    fn row(
+        counter: &mut Counter,
+        fb: &mut SceneBuffer,
+        rects: &mut [Rectangle],
+        group: &str,
+        label: &str,
+        batch: Batch<'_>,
+        rows: bool,
+    ) {
+        let mut recorder = Recorder {
+            rects,
+            len: 0,
+            pixels: 0,
+            rows,
+        };
+        let Ok(()) = batch.draw(&mut recorder);
+        let (len, pixels) = (recorder.len, recorder.pixels);
+        let spans = &rects[..len];
+        let drawn = counter.count(|| {
+            let Ok(()) = batch.draw(fb);
+        });
+        let setup = counter.count(|| batch.setup());
+        let filled = counter.count(|| {
+            for r in spans {
+                let Ok(()) = fb.fill_solid(r, BLUE);
+            }
+        });
+        hprintln!(
+            "row\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}",
+            group,
+            label,
+            batch.len(),
+            pixels,
+            len,
+            batch.width(),
+            drawn,
+            setup,
+            filled
+        );
+    }
+
+    /// `count` (at most 64) irregular triangles of `size` px tiled over
+    /// the screen, as in the host benchmark.
+    fn tiles(size: i32, count: usize, out: &mut [(Triangle, Rgb565); 64]) -> usize {
+        let (cols, rows) = (320 / size, 240 / size);
+        let mut n = 0;
+        for j in 0..rows {
+            for i in 0..cols {
+                if n < count.min(64) {
+                    out[n] = (builtin_scene::irregular(i * size, j * size, size), BLUE);
+                    n += 1;
+                }
+            }
+        }
+        n
+    }
+
+    #[entry]
+    fn main() -> ! {
+        // cortex-m-rt turns these into `&'static mut` (in .bss): no unsafe.
+        static mut FB: SceneBuffer = SceneBuffer::new();
+        static mut RECTS: [Rectangle; 8192] = [Rectangle::zero(); 8192];
+        let peripherals = cortex_m::Peripherals::take().expect("peripherals");
+        let mut counter = Counter::new(peripherals.SYST);
+        validate(&mut counter);
+        hprintln!("overhead\t{}", counter.overhead);
+
+        // Flat triangles of several sizes, and the scene's mesh.
+        let mut ts = [(Triangle::default(), BLUE); 64];
+        for (size, count, label) in [
+            (4, 64, "4 px"),
+            (16, 64, "16 px"),
+            (64, 15, "64 px"),
+            (240, 1, "240 px"),
+        ] {
+            let n = tiles(size, count, &mut ts);
+            let batch = Batch::Triangles(&ts[..n]);
+            row(
+                &mut counter,
+                FB,
+                RECTS,
+                "flat triangles",
+                label,
+                batch,
+                false,
+            );
+        }
+        let mut mesh = [(Triangle::default(), BLUE); 96];
+        let mut n = 0;
+        let Ok(()) = builtin_scene::for_each_mesh_triangle(|t, c| {
+            mesh[n] = (t, c);
+            n += 1;
+            Ok::<(), core::convert::Infallible>(())
+        });
+        let batch = Batch::Triangles(&mesh[..n]);
+        let label = "mesh 8x6 cells (18 px)";
+        row(
+            &mut counter,
+            FB,
+            RECTS,
+            "flat triangles",
+            label,
+            batch,
+            false,
+        );
+
+        // The same pixels in 32 and 64 bits.
+        for (t, label) in [
+            (TWIN, "TWIN: corners < 1200 px away"),
+            (HUGE, "HUGE: corners ~400000 px away"),
+        ] {
+            let batch = Batch::Triangles(&[(t, BLUE)]);
+            row(&mut counter, FB, RECTS, "edge paths", label, batch, false);
+        }
+
+        // Rectangles through fill_solid, beside one fill_solid per row.
+        for (side, count, label) in [
+            (4, 64, "4x4"),
+            (16, 64, "16x16"),
+            (64, 12, "64x64"),
+            (200, 1, "200x200"),
+        ] {
+            let mut rs = [Rectangle::zero(); 64];
+            let per_row = 320 / (side + 2);
+            for (k, r) in rs.iter_mut().enumerate().take(count) {
+                let (i, j) = ((k as i32 % per_row), (k as i32 / per_row));
+                let top_left = Point::new(i * (side + 2), j * (side + 2));
+                *r = Rectangle::new(top_left, Size::new(side as u32, side as u32));
+            }
+            let batch = Batch::Rects(&rs[..count]);
+            row(&mut counter, FB, RECTS, "rectangles", label, batch, true);
+        }
+
+        // Lines: 1 px (short, long, ends far off-screen) and thick.
+        let star = |k: i32, len: i32| {
+            let dirs = [
+                (2, 0),
+                (2, 1),
+                (2, 2),
+                (1, 2),
+                (0, 2),
+                (-1, 2),
+                (-2, 2),
+                (-2, 1),
+            ];
+            let (dx, dy) = dirs[(k % 8) as usize];
+            let half = Point::new(dx * len / 4, dy * len / 4);
+            let centre = Point::new(160 + k / 8, 120);
+            Line::new(centre - half, centre + half)
+        };
+        for (count, len, width, label) in [
+            (64, 16, 1, "1 px wide, 16 px long"),
+            (16, 200, 1, "1 px wide, 200 px long"),
+            (16, 100, 3, "3 px wide, 100 px long"),
+            (16, 100, 8, "8 px wide, 100 px long"),
+        ] {
+            let mut ls = [Line::default().stroke(BLUE); 64];
+            for (k, l) in ls.iter_mut().enumerate().take(count) {
+                *l = star(k as i32, len).stroke(BLUE).stroke_width(width);
+            }
+            let batch = Batch::Lines(&ls[..count]);
+            row(&mut counter, FB, RECTS, "lines", label, batch, false);
+        }
+        let batch = Batch::Lines(&[builtin_scene::FAR_LINE.stroke(BLUE)]);
+        let label = "1 px wide, ends 10^6 px off-screen";
+        row(&mut counter, FB, RECTS, "lines", label, batch, false);
+
+        // Polygons (active edge table).
+        let mut hexagons = [[Vertex::default(); 6]; 32];
+        for (k, h) in hexagons.iter_mut().enumerate() {
+            let k = k as i32;
+            *h = builtin_scene::hexagon((12 + 20 * (k % 8), 12 + 20 * (k / 8)), 9);
+        }
+        let hexagons = hexagons.each_ref().map(|h| (&h[..], FillRule::NonZero));
+        let batch = Batch::Polygons(&hexagons);
+        row(
+            &mut counter,
+            FB,
+            RECTS,
+            "polygons",
+            "hexagon 18 px",
+            batch,
+            false,
+        );
+        let star = builtin_scene::star((160, 120), 110, 50);
+        let batch = Batch::Polygons(&[(&star, FillRule::NonZero)]);
+        let label = "concave star, 12 vertices, 220 px";
+        row(&mut counter, FB, RECTS, "polygons", label, batch, false);
+        let pentagram = builtin_scene::pentagram((160, 120), 110);
+        let batch = Batch::Polygons(&[(&pentagram, FillRule::EvenOdd)]);
+        let label = "pentagram 220 px, even-odd";
+        row(&mut counter, FB, RECTS, "polygons", label, batch, false);
+
+        hprintln!("done");
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::nop();
+        }
+    }
+
+    #[panic_handler]
+    fn panic(info: &core::panic::PanicInfo) -> ! {
+        hprintln!("icount panicked: {}", info);
+        debug::exit(debug::EXIT_FAILURE);
+        loop {
+            cortex_m::asm::nop();
+        }
+    }
+}
+
+#[cfg(not(target_arch = "arm"))]
+fn main() {
+    eprintln!(
+        "icount is Cortex-M firmware: run .ci/icount, which builds it for \
+         thumbv7em-none-eabihf and runs it under QEMU with -icount shift=7"
+    );
+}

@@ -1,0 +1,47 @@
+//! Firmware for the code-size table in `BENCHMARKS.md`: the baseline. The
+//! same runtime, framebuffer, checksum and semihosting output as the other
+//! firmware, but nothing drawn, so the `.text` the library adds is the
+//! difference to `size_triangles` and `firmware`: `bash .ci/codesize`.
+
+#![cfg_attr(target_arch = "arm", no_std, no_main)]
+
+#[path = "common/builtin_scene.rs"]
+mod builtin_scene;
+
+/// Checksums the untouched (black) framebuffer.
+fn draw(fb: &mut builtin_scene::SceneBuffer) -> u32 {
+    builtin_scene::fnv1a32(core::hint::black_box(fb).as_bytes())
+}
+
+#[cfg(target_arch = "arm")]
+mod target {
+    use cortex_m_rt::entry;
+    use cortex_m_semihosting::{debug, hprintln};
+
+    use super::builtin_scene::SceneBuffer;
+
+    #[entry]
+    fn main() -> ! {
+        static mut FB: SceneBuffer = SceneBuffer::new();
+        hprintln!("baseline fnv1a32=0x{:08x}", super::draw(FB));
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::nop();
+        }
+    }
+
+    #[panic_handler]
+    fn panic(info: &core::panic::PanicInfo) -> ! {
+        hprintln!("panicked: {}", info);
+        debug::exit(debug::EXIT_FAILURE);
+        loop {
+            cortex_m::asm::nop();
+        }
+    }
+}
+
+#[cfg(not(target_arch = "arm"))]
+fn main() {
+    let mut fb = Box::new(builtin_scene::SceneBuffer::new());
+    println!("baseline fnv1a32=0x{:08x}", draw(&mut fb));
+}

@@ -1,0 +1,58 @@
+//! Firmware for the code-size table in `BENCHMARKS.md`: flat triangles
+//! only (irregular triangles of four sizes and the scene's mesh) on the
+//! 320 x 240 Rgb565 framebuffer, then the checksum over semihosting. Compare
+//! its `.text` with `size_baseline` (no drawing) and `firmware` (every
+//! primitive): `bash .ci/codesize`.
+
+#![cfg_attr(target_arch = "arm", no_std, no_main)]
+
+#[path = "common/builtin_scene.rs"]
+mod builtin_scene;
+
+use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+
+/// Draws the triangles; returns the checksum.
+fn draw(fb: &mut builtin_scene::SceneBuffer) -> u32 {
+    let Ok(()) = fb.clear(Rgb565::new(2, 5, 8));
+    for (k, size) in [4, 16, 64, 240].into_iter().enumerate() {
+        let color = Rgb565::new(8 * k as u8, 16, 31 - 8 * k as u8);
+        let Ok(()) = builtin_scene::irregular(5 * k as i32, 3 * k as i32, size)
+            .fill(color)
+            .draw(fb);
+    }
+    let Ok(()) = builtin_scene::draw_mesh(fb);
+    builtin_scene::fnv1a32(fb.as_bytes())
+}
+
+#[cfg(target_arch = "arm")]
+mod target {
+    use cortex_m_rt::entry;
+    use cortex_m_semihosting::{debug, hprintln};
+
+    use super::builtin_scene::SceneBuffer;
+
+    #[entry]
+    fn main() -> ! {
+        static mut FB: SceneBuffer = SceneBuffer::new();
+        hprintln!("triangles fnv1a32=0x{:08x}", super::draw(FB));
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::nop();
+        }
+    }
+
+    #[panic_handler]
+    fn panic(info: &core::panic::PanicInfo) -> ! {
+        hprintln!("panicked: {}", info);
+        debug::exit(debug::EXIT_FAILURE);
+        loop {
+            cortex_m::asm::nop();
+        }
+    }
+}
+
+#[cfg(not(target_arch = "arm"))]
+fn main() {
+    let mut fb = Box::new(builtin_scene::SceneBuffer::new());
+    println!("triangles fnv1a32=0x{:08x}", draw(&mut fb));
+}

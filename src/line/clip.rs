@@ -1,0 +1,255 @@
+//! A line in canonical form, and exact clipping of it before stepping.
+//!
+//! # Canonical form
+//!
+//! A line from pixel `P` to pixel `Q` is *x-major* when `|dx| >= |dy|`
+//! (45-degree lines included) and *y-major* otherwise. Its end points are
+//! ordered so that the major coordinate grows by one per step from
+//! `major0`, over `dmajor + 1` pixels, while the minor coordinate moves by
+//! `dminor <= dmajor` in total, in direction `minor_step` (+1 or -1).
+//! Both directions of a line have the same canonical form, so they light
+//! the same pixels by construction.
+//!
+//! # The pixel at each step
+//!
+//! At step `k` (`0..=dmajor`) the ideal minor offset is `dminor k / dmajor`
+//! and the lit pixel is `minor0 + minor_step * m(k)` with
+//!
+//! ```text
+//! m(k) = floor((2 dminor k + dmajor - b) / (2 dmajor))
+//! ```
+//!
+//! the offset rounded to nearest. At a tie (the offset is an integer plus
+//! one half) `b` decides: `b = 1` rounds the offset down, `b = 0` rounds it
+//! up. The tie rule is "the smaller coordinate", so `b = 1` when the minor
+//! coordinate grows along the canonical direction and `b = 0` when it
+//! shrinks.
+//!
+//! The remainder `r(k) = 2 dminor k + dmajor - b - 2 dmajor m(k)` lies in
+//! `[0, 2 dmajor)`, and the next offset is `m(k) + 1` iff
+//! `D(k) = r(k) + 2 dminor - 2 dmajor >= 0`: the Bresenham decision
+//! variable, updated by `+ 2 dminor` per step and `- 2 dmajor` per minor
+//! step. Its values stay in `[-2 dmajor, 2 dmajor]`.
+//!
+//! # Clipping
+//!
+//! `m` is non-decreasing in `k`, so the steps whose pixel lies inside the
+//! clip rectangle form one interval, found without stepping: the steps
+//! whose major coordinate is inside, intersected with the steps whose
+//! offset lies in the clip's minor range `[m_lo, m_hi]`,
+//!
+//! ```text
+//! m(k) >= M  <=>  k >= ceil((2 dmajor M - dmajor + b) / (2 dminor))
+//! ```
+//!
+//! (for `dminor > 0`). Then `m` and `D` at the first visible step are
+//! computed exactly: in `i64` when `dmajor < 2^30`, else in `i128`
+//! (coordinates are any `i32`, so `dmajor < 2^32` and, with the clip's
+//! offsets first limited to `0..=dminor`, every product is below `2^67`).
+//! A line that lies wholly inside the clip rectangle takes the textbook
+//! start, `D = 2 dminor - dmajor - b`, without any division.
+
+use core::ops::{Add, Mul, Neg, Sub};
+
+use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
+
+use crate::clip::Bounds;
+
+/// A line in the canonical form of the module docs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Canonical {
+    /// Whether x is the major axis.
+    pub x_major: bool,
+    /// Major and minor coordinate of the first pixel.
+    pub major0: i64,
+    pub minor0: i64,
+    /// Number of steps along the major axis (`>= 0`).
+    pub dmajor: i64,
+    /// Total minor movement, `0..=dmajor`.
+    pub dminor: i64,
+    /// +1 or -1: the direction of the minor coordinate.
+    pub minor_step: i64,
+    /// Whether the original line starts at the canonical end, i.e. was
+    /// reversed to make the major coordinate grow.
+    pub reversed: bool,
+}
+
+impl Canonical {
+    pub fn new(start: Point, end: Point) -> Self {
+        let (dx, dy) = (
+            i64::from(end.x) - i64::from(start.x),
+            i64::from(end.y) - i64::from(start.y),
+        );
+        let x_major = dx.abs() >= dy.abs();
+        let (dmaj, dmin) = if x_major { (dx, dy) } else { (dy, dx) };
+        let reversed = dmaj < 0;
+        let (first, dmin) = if reversed {
+            (end, -dmin)
+        } else {
+            (start, dmin)
+        };
+        let (major0, minor0) = if x_major {
+            (first.x, first.y)
+        } else {
+            (first.y, first.x)
+        };
+        Self {
+            x_major,
+            major0: i64::from(major0),
+            minor0: i64::from(minor0),
+            dmajor: dmaj.abs(),
+            dminor: dmin.abs(),
+            minor_step: if dmin < 0 { -1 } else { 1 },
+            reversed,
+        }
+    }
+
+    /// The major range `[lo, hi]` and minor range of `clip`, inclusive.
+    pub fn clip_ranges(&self, clip: &Rectangle) -> ((i64, i64), (i64, i64)) {
+        let b = Bounds::of(clip);
+        let (x, y) = ((b.x0, b.x1 - 1), (b.y0, b.y1 - 1));
+        if self.x_major {
+            (x, y)
+        } else {
+            (y, x)
+        }
+    }
+
+    /// Steps `k` whose major coordinate lies inside `clip`, within
+    /// `0..=dmajor` and without the pixel at the original end if
+    /// `skip_end`. `None` if there are none.
+    pub fn major_steps(&self, clip: &Rectangle, skip_end: bool) -> Option<(i64, i64)> {
+        let ((c0, c1), _) = self.clip_ranges(clip);
+        let mut lo = (c0 - self.major0).max(0);
+        let mut hi = (c1 - self.major0).min(self.dmajor);
+        if skip_end {
+            if self.reversed {
+                lo = lo.max(1);
+            } else {
+                hi = hi.min(self.dmajor - 1);
+            }
+        }
+        (lo <= hi).then_some((lo, hi))
+    }
+
+    /// The exactly clipped visible part, or `None` if no pixel of the line
+    /// lies inside `clip`.
+    pub fn visible(&self, clip: &Rectangle, skip_end: bool) -> Option<Visible> {
+        let (lo, hi) = self.major_steps(clip, skip_end)?;
+        let (_, (c0, c1)) = self.clip_ranges(clip);
+        // The clip's minor range as offsets m, limited to the line's own
+        // offsets 0..=dminor (which changes no step range: m(0) = 0 and
+        // m(dmajor) = dminor), so that products stay small.
+        let (m_lo, m_hi) = if self.minor_step > 0 {
+            (c0 - self.minor0, c1 - self.minor0)
+        } else {
+            (self.minor0 - c1, self.minor0 - c0)
+        };
+        if m_lo > self.dminor || m_hi < 0 {
+            return None;
+        }
+        let (m_lo, m_hi) = (m_lo.max(0), m_hi.min(self.dminor));
+        let whole = lo == 0 && hi == self.dmajor && m_lo == 0 && m_hi == self.dminor;
+        let (lo, hi, m, d) = if whole {
+            // Nothing clipped: the textbook start, no division.
+            let d = 2 * self.dminor - self.dmajor - i64::from(self.minor_step > 0);
+            (lo, hi, 0, d)
+        } else if self.dmajor < 1 << 30 {
+            // |2 dmajor m| < 2^62.
+            self.entry::<i64>(lo, hi, m_lo, m_hi)?
+        } else {
+            self.entry::<i128>(lo, hi, m_lo, m_hi)?
+        };
+        // Every visible pixel is a pixel of the line: all fit in i32.
+        let minor = self.minor0 + self.minor_step * m;
+        Some(Visible {
+            first_major: i32::try_from(self.major0 + lo).ok()?,
+            last_major: i32::try_from(self.major0 + hi).ok()?,
+            first_minor: i32::try_from(minor).ok()?,
+            decision: d,
+        })
+    }
+
+    /// The steps `lo..=hi` narrowed to offsets `m_lo..=m_hi`, the offset
+    /// and the decision variable at the first: `(lo, hi, m, D)`, computed
+    /// in `W`.
+    fn entry<W: Wide>(
+        &self,
+        lo: i64,
+        hi: i64,
+        m_lo: i64,
+        m_hi: i64,
+    ) -> Option<(i64, i64, i64, i64)> {
+        let w = W::from;
+        let (mut lo, mut hi) = (w(lo), w(hi));
+        let (dmaj, dmin, b) = (
+            w(self.dmajor),
+            w(self.dminor),
+            w(i64::from(self.minor_step > 0)),
+        );
+        let two = w(2);
+        if dmin == w(0) {
+            // m is 0 everywhere, and 0 is in m_lo..=m_hi.
+        } else {
+            // First step with m(k) >= m: ceil((2 dmaj m - dmaj + b) / (2 dmin)).
+            let first = |m: i64| -(-(two * dmaj * w(m) - dmaj + b)).div_floor(two * dmin);
+            lo = lo.max(first(m_lo));
+            hi = hi.min(first(m_hi + 1) - w(1));
+        }
+        if lo > hi {
+            return None;
+        }
+        let (m, d) = if dmaj == w(0) {
+            (w(0), w(0))
+        } else {
+            let num = two * dmin * lo + dmaj - b;
+            let m = num.div_floor(two * dmaj);
+            let r = num - two * dmaj * m;
+            (m, r + two * dmin - two * dmaj)
+        };
+        Some((lo.to_i64()?, hi.to_i64()?, m.to_i64()?, d.to_i64()?))
+    }
+}
+
+/// An integer wide enough for the clipping arithmetic.
+trait Wide:
+    Copy
+    + Ord
+    + From<i64>
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Neg<Output = Self>
+{
+    /// `floor(self / d)` for `d > 0`.
+    fn div_floor(self, d: Self) -> Self;
+    fn to_i64(self) -> Option<i64>;
+}
+
+impl Wide for i64 {
+    fn div_floor(self, d: Self) -> Self {
+        self.div_euclid(d)
+    }
+    fn to_i64(self) -> Option<i64> {
+        Some(self)
+    }
+}
+
+impl Wide for i128 {
+    fn div_floor(self, d: Self) -> Self {
+        self.div_euclid(d)
+    }
+    fn to_i64(self) -> Option<i64> {
+        i64::try_from(self).ok()
+    }
+}
+
+/// The visible part of a line: its first and last major coordinate, the
+/// minor coordinate of its first pixel and the decision variable `D` there.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Visible {
+    pub first_major: i32,
+    pub last_major: i32,
+    pub first_minor: i32,
+    pub decision: i64,
+}

@@ -1,0 +1,514 @@
+//! Lines and polylines between pixels.
+//!
+//! # Which pixels a line lights
+//!
+//! A [`Line`] runs from the centre of pixel `A` to the centre of pixel `B`
+//! (any `i32` coordinates). It is *x-major* when `|dx| >= |dy|`, else
+//! *y-major*. An x-major line lights exactly one pixel in every column
+//! from `A.x` to `B.x`: the pixel whose row is the ideal line's y at that
+//! column rounded to the nearest integer. A y-major line lights one pixel
+//! per row, its column rounded likewise. So both end pixels are lit and
+//! every pixel is within half a pixel of the ideal line along the minor
+//! axis.
+//!
+//! **Tie rule.** When the ideal line passes exactly through the midpoint
+//! between two pixels (the rounded value is an integer plus one half), the
+//! pixel with the *smaller* coordinate wins: the smaller y for x-major
+//! lines, the smaller x for y-major lines, whatever the sign of the slope.
+//! The rule names coordinates, not directions, so the line from `A` to `B`
+//! lights exactly the pixels of the line from `B` to `A`.
+//!
+//! # How
+//!
+//! The integer midpoint algorithm (Bresenham): after setup, one add and
+//! one compare per pixel, no multiply, divide or float. The line is
+//! clipped to the target's bounding box *before* stepping: the first and
+//! last visible step and the exact decision variable at the first are
+//! computed in `i128`, so a line from `i32::MIN` to `i32::MAX` costs no
+//! more than its visible pixels, and lights exactly the pixels the
+//! unclipped line would light inside the target.
+//!
+//! Pixels come out as [`Run`]s: horizontal runs of x-major lines and
+//! vertical runs of y-major lines, each one
+//! [`fill_solid`](DrawTarget::fill_solid) call.
+//!
+//! # Variants
+//!
+//! [`LineAlgorithm`] selects the classic approximations for comparison: a
+//! DDA with 32.32 fixed-point increments and the naive per-pixel
+//! multiply-and-round in `f32`. See its docs for how often they differ
+//! from the exact line.
+//!
+//! # Thick lines
+//!
+//! [`StyledLine::stroke_width`] above 1 draws the line as a filled
+//! rectangle of that width with the triangle rasterizer: the rectangle
+//! around the centre line from `A`'s centre to `B`'s centre, extended by
+//! half a pixel at each end, corners rounded to 1/4096 px. It follows the
+//! crate's sampling rule, so it shares edges with adjacent filled shapes
+//! without gaps or overdraw.
+
+mod bresenham;
+mod clip;
+mod polyline;
+mod thick;
+mod variants;
+
+pub use polyline::{Polyline, StyledPolyline};
+
+use embedded_graphics_core::{
+    draw_target::DrawTarget,
+    geometry::{Point, Size},
+    pixelcolor::PixelColor,
+    primitives::Rectangle,
+    Drawable,
+};
+
+use crate::Span;
+use clip::Canonical;
+
+/// A run of pixels of a line: `len` pixels from `start`, going right
+/// (horizontal) or down (vertical).
+///
+/// Unlike a [`Span`], a run can end at `i32::MAX`.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+/// use embedded_raster::Run;
+///
+/// let run = Run { start: Point::new(2, 5), len: 3, vertical: true };
+/// assert_eq!(run.rect(), Rectangle::new(Point::new(2, 5), Size::new(1, 3)));
+/// assert_eq!(run.last(), Point::new(2, 7));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Run {
+    /// The first pixel (leftmost or topmost).
+    pub start: Point,
+    /// Number of pixels, at least 1.
+    pub len: u32,
+    /// Whether the run goes down a column rather than along a row.
+    pub vertical: bool,
+}
+
+impl Run {
+    /// A run from major coordinate `first` to `last` (inclusive, growing)
+    /// at minor coordinate `minor`.
+    #[inline(always)]
+    fn along(x_major: bool, first: i32, last: i32, minor: i32) -> Self {
+        let len = last.abs_diff(first).saturating_add(1);
+        if x_major {
+            Self {
+                start: Point::new(first, minor),
+                len,
+                vertical: false,
+            }
+        } else {
+            Self {
+                start: Point::new(minor, first),
+                len,
+                vertical: true,
+            }
+        }
+    }
+
+    /// The run as a one-pixel-wide rectangle, for
+    /// [`fill_solid`](DrawTarget::fill_solid).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::geometry::{Point, Size};
+    /// use embedded_raster::Run;
+    ///
+    /// let r = Run { start: Point::new(-1, 0), len: 4, vertical: false }.rect();
+    /// assert_eq!(r.size, Size::new(4, 1));
+    /// ```
+    pub fn rect(&self) -> Rectangle {
+        let size = if self.vertical {
+            Size::new(1, self.len)
+        } else {
+            Size::new(self.len, 1)
+        };
+        Rectangle::new(self.start, size)
+    }
+
+    /// The last pixel of the run (saturating at `i32::MAX`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::geometry::Point;
+    /// use embedded_raster::Run;
+    ///
+    /// let run = Run { start: Point::new(7, 1), len: 1, vertical: false };
+    /// assert_eq!(run.last(), run.start);
+    /// ```
+    pub fn last(&self) -> Point {
+        let step = i32::try_from(self.len.saturating_sub(1)).unwrap_or(i32::MAX);
+        if self.vertical {
+            Point::new(self.start.x, self.start.y.saturating_add(step))
+        } else {
+            Point::new(self.start.x.saturating_add(step), self.start.y)
+        }
+    }
+
+    /// A horizontal run as a [`Span`]; `None` for a vertical run or one
+    /// that ends at `i32::MAX` (a span's end is exclusive).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::geometry::Point;
+    /// use embedded_raster::{Run, Span};
+    ///
+    /// let run = Run { start: Point::new(3, 9), len: 2, vertical: false };
+    /// assert_eq!(run.span(), Some(Span { y: 9, x_start: 3, x_end: 5 }));
+    /// ```
+    pub fn span(&self) -> Option<Span> {
+        if self.vertical {
+            return None;
+        }
+        let end = i64::from(self.start.x) + i64::from(self.len);
+        Some(Span {
+            y: self.start.y,
+            x_start: self.start.x,
+            x_end: i32::try_from(end).ok()?,
+        })
+    }
+}
+
+/// How a 1-pixel line chooses its pixels: the exact Bresenham line or one
+/// of two classic approximations, for measuring the speed/accuracy trade.
+///
+/// All three light exactly one pixel per step along the major axis, both
+/// end columns (rows) included, and the same pixels in both directions, and
+/// all are clipped before stepping. They differ in the minor coordinate:
+///
+/// - [`Bresenham`](Self::Bresenham) is exact (the [module docs'](self) rule).
+/// - [`Dda`](Self::Dda) adds a 32.32 fixed-point slope per pixel and rounds
+///   (the slope itself rounded to 2^-32). Its ties round away from the
+///   start, so it breaks the tie rule on half of them.
+/// - [`Naive`](Self::Naive) computes `round(slope * k)` in `f32` per pixel:
+///   one multiply per pixel, 24-bit precision; it drifts by many pixels on
+///   lines longer than about 2^24 px.
+///
+/// Measured over 20000 random lines of 1 to 4096 px (6.3 million pixels,
+/// `variant_accuracy` in `tests/line.rs`): 0.14 % of the DDA's pixels
+/// differ from Bresenham's, every one at an exact tie; 0.13 % of the naive
+/// line's, all but 7 at ties. None is more than one pixel off.
+///
+/// Pixels an approximation puts outside the target are dropped.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_raster::{Line, LineAlgorithm};
+///
+/// let styled = Line::new(Point::new(0, 0), Point::new(9, 3))
+///     .stroke(BinaryColor::On)
+///     .algorithm(LineAlgorithm::Dda);
+/// assert_eq!(styled.algorithm, LineAlgorithm::Dda);
+/// assert_eq!(LineAlgorithm::default(), LineAlgorithm::Bresenham);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum LineAlgorithm {
+    /// The exact integer midpoint line.
+    #[default]
+    Bresenham,
+    /// Digital differential analyzer with 32.32 fixed-point increments.
+    Dda,
+    /// Per-pixel `f32` multiply and round.
+    Naive,
+}
+
+/// A line from the pixel `start` to the pixel `end`, both lit.
+///
+/// See the [module docs](self) for which pixels it lights (and the tie
+/// rule).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, Rgb565Le}, Framebuffer, Line};
+///
+/// let mut fb = Framebuffer::<Rgb565Le, 64, 64, { buffer_size::<Rgb565Le>(64, 64) }>::new();
+/// Line::new(Point::new(1, 2), Point::new(60, 40))
+///     .stroke(Rgb565::GREEN)
+///     .draw(&mut fb)?;
+/// assert_eq!(fb.pixel(Point::new(1, 2)), Some(Rgb565::GREEN));
+/// assert_eq!(fb.pixel(Point::new(60, 40)), Some(Rgb565::GREEN));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Line {
+    /// The first end pixel.
+    pub start: Point,
+    /// The second end pixel.
+    pub end: Point,
+}
+
+impl Line {
+    /// Creates a line between two pixels.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::geometry::Point;
+    /// use embedded_raster::Line;
+    ///
+    /// let line = Line::new(Point::new(i32::MIN, 0), Point::new(i32::MAX, 7));
+    /// assert_eq!(line.end.y, 7);
+    /// ```
+    pub const fn new(start: Point, end: Point) -> Self {
+        Self { start, end }
+    }
+
+    /// Styles the line as a 1-pixel Bresenham stroke of `color`; change
+    /// the width with [`StyledLine::stroke_width`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::Line;
+    ///
+    /// let styled = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On);
+    /// assert_eq!((styled.color, styled.width), (BinaryColor::On, 1));
+    /// ```
+    pub const fn stroke<C: PixelColor>(self, color: C) -> StyledLine<C> {
+        StyledLine {
+            line: self,
+            color,
+            width: 1,
+            algorithm: LineAlgorithm::Bresenham,
+        }
+    }
+
+    /// Calls `f` with the runs of the exact 1-pixel line inside `clip`, in
+    /// order of growing x (x-major) or y (y-major), and stops at the first
+    /// error `f` returns. No allocation, no panic, work proportional to
+    /// the visible pixels.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use core::convert::Infallible;
+    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_raster::{Line, Run};
+    ///
+    /// // Slope 1/2: the ideal line crosses midpoints at odd x, where the
+    /// // tie rule picks the smaller y.
+    /// let clip = Rectangle::new(Point::zero(), Size::new(16, 16));
+    /// let mut runs = [Run { start: Point::zero(), len: 0, vertical: false }; 3];
+    /// let mut n = 0;
+    /// Line::new(Point::new(0, 0), Point::new(4, 2)).for_each_run(&clip, |r| {
+    ///     runs[n] = r;
+    ///     n += 1;
+    ///     Ok::<(), Infallible>(())
+    /// })?;
+    /// let pixels = runs.map(|r| (r.start.x, r.start.y, r.len));
+    /// assert_eq!(pixels, [(0, 0, 2), (2, 1, 2), (4, 2, 1)]);
+    /// # Ok::<(), Infallible>(())
+    /// ```
+    pub fn for_each_run<E>(
+        &self,
+        clip: &Rectangle,
+        mut f: impl FnMut(Run) -> Result<(), E>,
+    ) -> Result<(), E> {
+        self.runs(LineAlgorithm::Bresenham, clip, false, &mut f)
+    }
+
+    /// Like [`for_each_run`](Self::for_each_run), with the pixels chosen by
+    /// `algorithm`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use core::convert::Infallible;
+    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_raster::{Line, LineAlgorithm};
+    ///
+    /// let clip = Rectangle::new(Point::zero(), Size::new(16, 16));
+    /// let mut lit = 0;
+    /// Line::new(Point::new(0, 0), Point::new(4, 2)).for_each_run_with(LineAlgorithm::Naive, &clip, |r| {
+    ///     lit += r.len;
+    ///     Ok::<(), Infallible>(())
+    /// })?;
+    /// assert_eq!(lit, 5); // one per column
+    /// # Ok::<(), Infallible>(())
+    /// ```
+    pub fn for_each_run_with<E>(
+        &self,
+        algorithm: LineAlgorithm,
+        clip: &Rectangle,
+        mut f: impl FnMut(Run) -> Result<(), E>,
+    ) -> Result<(), E> {
+        self.runs(algorithm, clip, false, &mut f)
+    }
+
+    /// The runs, without the pixel at `end` if `skip_end`.
+    fn runs<E>(
+        &self,
+        algorithm: LineAlgorithm,
+        clip: &Rectangle,
+        skip_end: bool,
+        f: &mut impl FnMut(Run) -> Result<(), E>,
+    ) -> Result<(), E> {
+        let c = Canonical::new(self.start, self.end);
+        match algorithm {
+            LineAlgorithm::Bresenham => match c.visible(clip, skip_end) {
+                Some(v) => bresenham::runs(&c, &v, f),
+                None => Ok(()),
+            },
+            other => variants::runs(other, &c, clip, skip_end, f),
+        }
+    }
+}
+
+/// A [`Line`] with a colour, a width and an algorithm: a [`Drawable`].
+///
+/// Width 1 (the default) draws the 1-pixel line chosen by `algorithm`, one
+/// [`fill_solid`](DrawTarget::fill_solid) per [`Run`]. Width 0 draws
+/// nothing. Wider lines are filled rectangles (see the [module
+/// docs](self#thick-lines)) drawn with the triangle rasterizer, one
+/// `fill_solid` per row span; `algorithm` does not apply to them. Widths
+/// above 65535 px draw as 65535 px.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, Line};
+///
+/// let mut fb = Framebuffer::<Gray8Bytes, 32, 32, { buffer_size::<Gray8Bytes>(32, 32) }>::new();
+/// // A horizontal line 3 px wide covers rows 9, 10 and 11, x from 2 to 20.
+/// Line::new(Point::new(2, 10), Point::new(20, 10))
+///     .stroke(Gray8::WHITE)
+///     .stroke_width(3)
+///     .draw(&mut fb)?;
+/// let lit = |x, y| fb.pixel(Point::new(x, y)) == Some(Gray8::WHITE);
+/// assert!(lit(2, 9) && lit(20, 11) && !lit(1, 10) && !lit(21, 10) && !lit(10, 12));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct StyledLine<C> {
+    /// The geometry.
+    pub line: Line,
+    /// The stroke colour.
+    pub color: C,
+    /// The stroke width in pixels.
+    pub width: u32,
+    /// How 1-pixel lines choose their pixels.
+    pub algorithm: LineAlgorithm,
+}
+
+impl<C> StyledLine<C> {
+    /// Sets the stroke width in pixels.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::Line;
+    ///
+    /// let styled = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On).stroke_width(4);
+    /// assert_eq!(styled.width, 4);
+    /// ```
+    pub const fn stroke_width(mut self, width: u32) -> Self {
+        self.width = width;
+        self
+    }
+
+    /// Sets the algorithm of 1-pixel lines.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::{Line, LineAlgorithm};
+    ///
+    /// let styled = Line::new(Point::zero(), Point::new(5, 2)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive);
+    /// assert_eq!(styled.algorithm, LineAlgorithm::Naive);
+    /// ```
+    pub const fn algorithm(mut self, algorithm: LineAlgorithm) -> Self {
+        self.algorithm = algorithm;
+        self
+    }
+}
+
+impl<C: PixelColor> Drawable for StyledLine<C> {
+    type Color = C;
+    type Output = ();
+
+    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        draw_segment(
+            self.line,
+            self.width,
+            self.algorithm,
+            false,
+            self.color,
+            target,
+        )
+    }
+}
+
+/// Draws one line (or polyline segment) on `target`.
+fn draw_segment<C: PixelColor, D: DrawTarget<Color = C>>(
+    line: Line,
+    width: u32,
+    algorithm: LineAlgorithm,
+    skip_end: bool,
+    color: C,
+    target: &mut D,
+) -> Result<(), D::Error> {
+    let clip = target.bounding_box();
+    match width {
+        0 => Ok(()),
+        1 => line.runs(algorithm, &clip, skip_end, &mut |r: Run| {
+            target.fill_solid(&r.rect(), color)
+        }),
+        w => match thick::triangles(line.start, line.end, w, &clip) {
+            Some(tris) => tris
+                .iter()
+                .try_for_each(|t| t.for_each_span(&clip, |s| target.fill_solid(&s.rect(), color))),
+            None => Ok(()),
+        },
+    }
+}
+
+// `Point` has no `defmt::Format` here, so these are written out.
+#[cfg(feature = "defmt")]
+impl defmt::Format for Run {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        defmt::write!(
+            f,
+            "Run {{ start: ({=i32}, {=i32}), len: {=u32}, vertical: {=bool} }}",
+            self.start.x,
+            self.start.y,
+            self.len,
+            self.vertical
+        );
+    }
+}
+
+#[cfg(feature = "defmt")]
+impl defmt::Format for Line {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        defmt::write!(
+            f,
+            "Line {{ start: ({=i32}, {=i32}), end: ({=i32}, {=i32}) }}",
+            self.start.x,
+            self.start.y,
+            self.end.x,
+            self.end.y
+        );
+    }
+}

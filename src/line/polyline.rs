@@ -1,0 +1,222 @@
+//! Polylines: connected lines over a borrowed list of points.
+
+use embedded_graphics_core::{
+    draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor, primitives::Rectangle,
+    Drawable,
+};
+
+use super::{draw_segment, Line, LineAlgorithm, Run};
+
+/// Connected lines through `points`, in order, each joint pixel lit once.
+///
+/// Each segment is the [`Line`] between consecutive points, drawn without
+/// its last pixel except for the final segment, so a joint pixel (the end
+/// of one segment, the start of the next) is written once: a polyline that
+/// does not overlap itself writes every pixel once. A closed polyline (at
+/// least 3 points, the last equal to the first, not all equal) also leaves
+/// out the final segment's last pixel, which the first segment lit. One
+/// point draws that pixel; no points draw nothing.
+///
+/// Thick polylines ([`StyledPolyline::stroke_width`] above 1) are their
+/// segments' thick lines, without joins: they overlap on the inside of a
+/// turn.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, Polyline};
+///
+/// let mut fb = Framebuffer::<Gray8Bytes, 16, 16, { buffer_size::<Gray8Bytes>(16, 16) }>::new();
+/// let points = [Point::new(1, 1), Point::new(12, 1), Point::new(12, 9), Point::new(3, 14)];
+/// Polyline::new(&points).stroke(Gray8::WHITE).draw(&mut fb)?;
+/// assert_eq!(fb.pixel(Point::new(12, 1)), Some(Gray8::WHITE));
+/// assert_eq!(fb.pixel(Point::new(3, 14)), Some(Gray8::WHITE));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Polyline<'a> {
+    /// The vertices, in drawing order.
+    pub points: &'a [Point],
+}
+
+impl<'a> Polyline<'a> {
+    /// Creates a polyline through `points`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::geometry::Point;
+    /// use embedded_raster::Polyline;
+    ///
+    /// let points = [Point::new(0, 0), Point::new(5, 5)];
+    /// assert_eq!(Polyline::new(&points).points.len(), 2);
+    /// ```
+    pub const fn new(points: &'a [Point]) -> Self {
+        Self { points }
+    }
+
+    /// Styles the polyline as a 1-pixel Bresenham stroke of `color`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::Polyline;
+    ///
+    /// let points = [Point::zero(), Point::new(3, 1)];
+    /// let styled = Polyline::new(&points).stroke(BinaryColor::On);
+    /// assert_eq!(styled.width, 1);
+    /// ```
+    pub const fn stroke<C: PixelColor>(self, color: C) -> StyledPolyline<'a, C> {
+        StyledPolyline {
+            polyline: self,
+            color,
+            width: 1,
+            algorithm: LineAlgorithm::Bresenham,
+        }
+    }
+
+    /// Calls `f` with the runs of the 1-pixel polyline by `algorithm`
+    /// inside `clip`, segment by segment (each in its own run order), and
+    /// stops at the first error `f` returns.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use core::convert::Infallible;
+    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_raster::{LineAlgorithm, Polyline};
+    ///
+    /// // An L: 5 pixels across, 4 more down; the corner is lit once.
+    /// let points = [Point::new(0, 0), Point::new(4, 0), Point::new(4, 4)];
+    /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
+    /// let mut lit = 0;
+    /// Polyline::new(&points).for_each_run(LineAlgorithm::Bresenham, &clip, |r| {
+    ///     lit += r.len;
+    ///     Ok::<(), Infallible>(())
+    /// })?;
+    /// assert_eq!(lit, 9);
+    /// # Ok::<(), Infallible>(())
+    /// ```
+    pub fn for_each_run<E>(
+        &self,
+        algorithm: LineAlgorithm,
+        clip: &Rectangle,
+        mut f: impl FnMut(Run) -> Result<(), E>,
+    ) -> Result<(), E> {
+        self.segments()
+            .try_for_each(|(line, skip_end)| line.runs(algorithm, clip, skip_end, &mut f))
+    }
+
+    /// Each segment and whether its last pixel is left out.
+    fn segments(&self) -> impl Iterator<Item = (Line, bool)> + 'a {
+        let points = self.points;
+        let n = points.len();
+        let closed = n >= 3
+            && points.first() == points.last()
+            && points.iter().any(|p| Some(p) != points.first());
+        let single = points
+            .first()
+            .filter(|_| n == 1)
+            .map(|&p| (Line::new(p, p), false));
+        let pairs = points.windows(2).enumerate().map(move |(i, w)| {
+            let final_segment = i + 2 == n;
+            (Line::new(w[0], w[1]), !final_segment || closed)
+        });
+        single.into_iter().chain(pairs)
+    }
+}
+
+/// A [`Polyline`] with a colour, a width and an algorithm: a [`Drawable`].
+/// Width 0 draws nothing; see [`Polyline`] for the other widths.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Polyline};
+///
+/// let mut fb = Framebuffer::<BinaryMsb, 32, 32, { buffer_size::<BinaryMsb>(32, 32) }>::new();
+/// let zigzag = [Point::new(0, 0), Point::new(10, 20), Point::new(20, 0), Point::new(31, 31)];
+/// Polyline::new(&zigzag).stroke(BinaryColor::On).stroke_width(3).draw(&mut fb)?;
+/// assert_eq!(fb.pixel(Point::new(10, 20)), Some(BinaryColor::On));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct StyledPolyline<'a, C> {
+    /// The geometry.
+    pub polyline: Polyline<'a>,
+    /// The stroke colour.
+    pub color: C,
+    /// The stroke width in pixels.
+    pub width: u32,
+    /// How 1-pixel segments choose their pixels.
+    pub algorithm: LineAlgorithm,
+}
+
+impl<C> StyledPolyline<'_, C> {
+    /// Sets the stroke width in pixels.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::Polyline;
+    ///
+    /// let points = [Point::zero(), Point::new(3, 1)];
+    /// let p = Polyline::new(&points).stroke(BinaryColor::On).stroke_width(2);
+    /// assert_eq!(p.width, 2);
+    /// ```
+    pub const fn stroke_width(mut self, width: u32) -> Self {
+        self.width = width;
+        self
+    }
+
+    /// Sets the algorithm of 1-pixel segments.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::{LineAlgorithm, Polyline};
+    ///
+    /// let points = [Point::zero(), Point::new(3, 1)];
+    /// let p = Polyline::new(&points).stroke(BinaryColor::On).algorithm(LineAlgorithm::Dda);
+    /// assert_eq!(p.algorithm, LineAlgorithm::Dda);
+    /// ```
+    pub const fn algorithm(mut self, algorithm: LineAlgorithm) -> Self {
+        self.algorithm = algorithm;
+        self
+    }
+}
+
+impl<C: PixelColor> Drawable for StyledPolyline<'_, C> {
+    type Color = C;
+    type Output = ();
+
+    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        let (width, algorithm, color) = (self.width, self.algorithm, self.color);
+        self.polyline.segments().try_for_each(|(line, skip_end)| {
+            // Thick segments are whole rectangles: no pixel to leave out.
+            draw_segment(
+                line,
+                width,
+                algorithm,
+                skip_end && width == 1,
+                color,
+                target,
+            )
+        })
+    }
+}
+
+#[cfg(feature = "defmt")]
+impl defmt::Format for Polyline<'_> {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        defmt::write!(f, "Polyline {{ {=usize} points }}", self.points.len());
+    }
+}

@@ -1,0 +1,152 @@
+//! Thick lines as two triangles of the exact rasterizer.
+//!
+//! A line of width `w` from pixel `A` to pixel `B` is the rectangle whose
+//! centre line runs from the centre of `A` to the centre of `B`, extended
+//! by half a pixel beyond each (so a horizontal or vertical thick line
+//! covers its end pixels whole), `w` pixels across. Its corners are
+//!
+//! ```text
+//! A - e + n,  B + e + n,  B + e - n,  A - e - n
+//! e = (dx, dy) / (2 len),   n = (-dy, dx) w / (2 len),   len = sqrt(dx^2 + dy^2)
+//! ```
+//!
+//! rounded to the nearest 1/4096 px (exactly, in integers: `u128::isqrt`),
+//! and it is filled as two [`Triangle`]s sharing the diagonal, under the
+//! crate's sampling rule. A zero-length thick line is the `w x w` square
+//! around its pixel's centre.
+//!
+//! Corners must be [`Vertex`]es. When one would leave the 20.12 range, the
+//! centre line is first cut to the target's bounding box grown by
+//! `w / 2 + 2` px (parametrically, in exact rational arithmetic, the cut
+//! points rounded to the nearest 1/4096 px); nothing cut away can light a
+//! pixel of the target. Pixels beyond the 20.12 range are never lit, as
+//! for every filled shape, and when the cut is needed, neither are those
+//! within `w + 4` px of the range's ends.
+
+use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
+
+use crate::{clip::Bounds, vertex::ONE, Triangle, Vertex};
+
+/// Widths above this are drawn as this width.
+pub(crate) const MAX_WIDTH: u32 = 65535;
+
+/// The two triangles of the thick line, or `None` if nothing of it can be
+/// visible in `clip`.
+pub(crate) fn triangles(
+    start: Point,
+    end: Point,
+    width: u32,
+    clip: &Rectangle,
+) -> Option<[Triangle; 2]> {
+    let w = i128::from(width.min(MAX_WIDTH));
+    let centre = |p: Point| (i128::from(p.x) * 4096 + 2048, i128::from(p.y) * 4096 + 2048);
+    let (mut p0, mut p1) = (centre(start), centre(end));
+    // In pixels: the ratios below do not depend on the unit.
+    let (dx, dy) = (
+        i128::from(end.x) - i128::from(start.x),
+        i128::from(end.y) - i128::from(start.y),
+    );
+    let (e, n) = if dx == 0 && dy == 0 {
+        ((w * 2048, 0), (0, w * 2048))
+    } else {
+        let len2 = dx * dx + dy * dy;
+        let scaled =
+            |d: i128, f: i128| d.signum() * div_sqrt(d.unsigned_abs() * f.unsigned_abs(), len2);
+        // e = (dx, dy) * 2048 / len and n = (-dy, dx) * w * 2048 / len, raw.
+        (
+            (scaled(dx, 2048), scaled(dy, 2048)),
+            (-scaled(dy, 2048 * w), scaled(dx, 2048 * w)),
+        )
+    };
+    let corners = |p0: (i128, i128), p1: (i128, i128)| {
+        [
+            (p0.0 - e.0 + n.0, p0.1 - e.1 + n.1),
+            (p1.0 + e.0 + n.0, p1.1 + e.1 + n.1),
+            (p1.0 + e.0 - n.0, p1.1 + e.1 - n.1),
+            (p0.0 - e.0 - n.0, p0.1 - e.1 - n.1),
+        ]
+    };
+    let vertex = |(x, y): (i128, i128)| {
+        Some(Vertex::from_raw(
+            i32::try_from(x).ok()?,
+            i32::try_from(y).ok()?,
+        ))
+    };
+    let mut v = corners(p0, p1).map(vertex);
+    if v.iter().any(Option::is_none) {
+        (p0, p1) = cut(p0, p1, w, clip)?;
+        v = corners(p0, p1).map(vertex);
+    }
+    let [Some(a), Some(b), Some(c), Some(d)] = v else {
+        return None;
+    };
+    let v = [a, b, c, d];
+    Some([
+        Triangle::new(v[0], v[1], v[2]),
+        Triangle::new(v[0], v[2], v[3]),
+    ])
+}
+
+/// `round(a / sqrt(len2))` (`len2 > 0`, half up), in raw units: with
+/// `t = floor(2 a / sqrt(len2)) = isqrt(floor(4 a^2 / len2))`, the nearest
+/// integer is `floor((t + 1) / 2)`.
+fn div_sqrt(a: u128, len2: i128) -> i128 {
+    let len2 = len2.unsigned_abs();
+    // a < 2^32 * 2^16 * 2^11, so 4 a^2 < 2^120.
+    let t = (4 * a * a / len2).isqrt();
+    i128::try_from(t.div_ceil(2)).unwrap_or_default()
+}
+
+/// The part of the centre line `p0 -> p1` (raw units) inside `clip` grown
+/// by `w / 2 + 2` px, within the range where the corners stay 20.12.
+fn cut(
+    p0: (i128, i128),
+    p1: (i128, i128),
+    w: i128,
+    clip: &Rectangle,
+) -> Option<((i128, i128), (i128, i128))> {
+    let b = Bounds::of(clip);
+    let margin = (w / 2 + 2) * ONE as i128;
+    let (lo, hi) = (
+        i128::from(i32::MIN) + margin * 2,
+        i128::from(i32::MAX) - margin * 2,
+    );
+    let range = |a: i64, z: i64| {
+        let a = (i128::from(a) * 4096 - margin).max(lo);
+        let z = (i128::from(z) * 4096 + margin).min(hi);
+        (a <= z).then_some((a, z))
+    };
+    let (bx, by) = (range(b.x0, b.x1)?, range(b.y0, b.y1)?);
+    // Liang-Barsky with t = num / den, den > 0.
+    let (mut t0, mut t1) = ((0i128, 1i128), (1i128, 1i128));
+    let less = |a: (i128, i128), b: (i128, i128)| a.0 * b.1 < b.0 * a.1;
+    for (from, to, (a, z)) in [(p0.0, p1.0, bx), (p0.1, p1.1, by)] {
+        let d = to - from;
+        if d == 0 {
+            if from < a || from > z {
+                return None;
+            }
+            continue;
+        }
+        let frac = |v: i128| if d > 0 { (v - from, d) } else { (from - v, -d) };
+        let (enter, exit) = if d > 0 {
+            (frac(a), frac(z))
+        } else {
+            (frac(z), frac(a))
+        };
+        if less(t0, enter) {
+            t0 = enter;
+        }
+        if less(exit, t1) {
+            t1 = exit;
+        }
+    }
+    if less(t1, t0) {
+        return None;
+    }
+    let at = |t: (i128, i128)| {
+        let lerp = |a: i128, z: i128| a + ((z - a) * t.0 * 2 + t.1).div_euclid(2 * t.1);
+        (lerp(p0.0, p1.0), lerp(p0.1, p1.1))
+    };
+    Some((at(t0), at(t1)))
+}

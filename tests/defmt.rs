@@ -1,0 +1,32 @@
+//! With the `defmt` feature, the public value types implement
+//! `defmt::Format` (checked at compile time; `.ci/run` also builds the
+//! library for thumbv7em-none-eabihf with `--features defmt`).
+
+#![cfg(feature = "defmt")]
+
+use embedded_graphics_core::pixelcolor::{BinaryColor, Rgb565};
+use embedded_raster::{
+    framebuffer::{buffer_size, BinaryMsb, Gray8Bytes, Rgb565Be, Rgb565Le, Rgb888Bytes},
+    CoordinateOutOfRange, FilledTriangle, Framebuffer, ParseCoordinateError, Span, StepWidth,
+    Triangle, Vertex,
+};
+
+fn implements_format<T: defmt::Format + ?Sized>() {}
+
+#[test]
+fn value_types_implement_format() {
+    implements_format::<Vertex>();
+    implements_format::<Triangle>();
+    implements_format::<FilledTriangle<Rgb565>>();
+    implements_format::<FilledTriangle<BinaryColor>>();
+    implements_format::<Span>();
+    implements_format::<StepWidth>();
+    implements_format::<CoordinateOutOfRange>();
+    implements_format::<ParseCoordinateError>();
+    implements_format::<Rgb565Le>();
+    implements_format::<Rgb565Be>();
+    implements_format::<Rgb888Bytes>();
+    implements_format::<Gray8Bytes>();
+    implements_format::<BinaryMsb>();
+    implements_format::<Framebuffer<Rgb565Le, 4, 4, { buffer_size::<Rgb565Le>(4, 4) }>>();
+}

@@ -1,0 +1,151 @@
+//! Thick lines: their rectangle, shared edges, the whole range.
+
+use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+use embedded_raster::{sim::SimDisplay, Line};
+use proptest::prelude::*;
+
+use super::{any_line, extreme_line, p, window_on};
+
+/// Draws `line` with `width` on a fresh `size x size` display.
+fn thick(line: Line, width: u32, size: u32) -> SimDisplay<Gray8> {
+    let mut d = SimDisplay::new(size, size, Gray8::BLACK);
+    line.stroke(Gray8::WHITE)
+        .stroke_width(width)
+        .draw(&mut d)
+        .unwrap();
+    assert_eq!(d.out_of_bounds_writes(), 0);
+    assert_eq!(d.write_stats().draw_iter_pixels, 0);
+    d
+}
+
+/// Where the centre of pixel `(x, y)` lies relative to the rectangle of a
+/// thick line, in `f64` (independent of the crate's integer corners):
+/// positive inside, negative outside, the distance to the nearest side.
+fn rect_margin(line: Line, width: u32, x: i64, y: i64) -> f64 {
+    let (ax, ay) = (line.start.x as f64, line.start.y as f64);
+    let (dx, dy) = (line.end.x as f64 - ax, line.end.y as f64 - ay);
+    let (px, py) = (x as f64 - ax, y as f64 - ay);
+    let len = (dx * dx + dy * dy).sqrt();
+    let w = width as f64 / 2.0;
+    if len == 0.0 {
+        return w - px.abs().max(py.abs());
+    }
+    let u = (px * dx + py * dy) / len;
+    let v = (px * dy - py * dx) / len;
+    (u + 0.5).min(len + 0.5 - u).min(w - v.abs())
+}
+
+fn assert_thick(line: Line, width: u32, size: u32) {
+    let d = thick(line, width, size);
+    for y in 0..size as i64 {
+        for x in 0..size as i64 {
+            let c = d.write_count(Point::new(x as i32, y as i32)).unwrap();
+            assert!(c <= 1, "{line:?} w {width}: ({x}, {y}) written {c} times");
+            let m = rect_margin(line, width, x, y);
+            if m > 1e-3 {
+                assert_eq!(
+                    c, 1,
+                    "{line:?} w {width}: ({x}, {y}) inside by {m} but unlit"
+                );
+            } else if m < -1e-3 {
+                assert_eq!(
+                    c, 0,
+                    "{line:?} w {width}: ({x}, {y}) outside by {m} but lit"
+                );
+            }
+        }
+    }
+}
+
+proptest! {
+    #[test]
+    fn thick_lines_are_their_rectangle(
+        c in prop::array::uniform4(-8i64..40),
+        width in 2u32..12,
+    ) {
+        assert_thick(Line::new(p(c[0], c[1]), p(c[2], c[3])), width, 32);
+    }
+
+    #[test]
+    fn thick_lines_far_away(
+        line in prop_oneof![extreme_line(), any_line()],
+        f in any::<u16>(),
+        width in 2u32..9,
+    ) {
+        // Move the line so that the display sees the part near fraction f.
+        let win = window_on(line, f, (0, 0), (24, 24));
+        let shift = |q: Point| p(q.x as i64 - win.x0, q.y as i64 - win.y0);
+        let moved = Line::new(shift(line.start), shift(line.end));
+        if moved.start.x as i64 == line.start.x as i64 - win.x0
+            && moved.end.x as i64 == line.end.x as i64 - win.x0
+            && moved.start.y as i64 == line.start.y as i64 - win.y0
+            && moved.end.y as i64 == line.end.y as i64 - win.y0
+        {
+            assert_thick(moved, width, 24);
+        }
+    }
+}
+
+#[test]
+fn thick_line_widths_and_caps() {
+    let l = |a: (i32, i32), b: (i32, i32)| Line::new(Point::new(a.0, a.1), Point::new(b.0, b.1));
+    let rows = |d: &SimDisplay<Gray8>, x: i32| {
+        (0..32)
+            .filter(|&y| d.write_count(Point::new(x, y)) == Some(1))
+            .collect::<Vec<_>>()
+    };
+    // Odd widths centre on the line's row, even ones extend one more row up.
+    assert_eq!(rows(&thick(l((2, 10), (20, 10)), 3, 32), 2), [9, 10, 11]);
+    assert_eq!(
+        rows(&thick(l((2, 10), (20, 10)), 4, 32), 20),
+        [8, 9, 10, 11]
+    );
+    // Both end pixels covered whole, nothing beyond.
+    let d = thick(l((20, 10), (2, 10)), 2, 32);
+    assert_eq!(d.pixels_written(), 2 * 19);
+    // Width 0 draws nothing, width 1 is the Bresenham line.
+    assert_eq!(thick(l((2, 10), (20, 17)), 0, 32).pixels_written(), 0);
+    assert_eq!(thick(l((2, 10), (20, 17)), 1, 32).pixels_written(), 19);
+    // A zero-length thick line is a w x w square.
+    assert_eq!(thick(l((9, 9), (9, 9)), 5, 32).pixels_written(), 25);
+    // Across the whole i32 range, clipped before the triangles are built.
+    let d = thick(l((i32::MIN, 5), (i32::MAX, 5)), 3, 32);
+    assert_eq!((rows(&d, 0), rows(&d, 31)), (vec![4, 5, 6], vec![4, 5, 6]));
+    assert_eq!(d.pixels_written(), 3 * 32);
+}
+
+#[test]
+fn thick_lines_share_edges() {
+    // Two parallel lines of width 10 whose rectangles touch along a side
+    // through pixel centres: direction (3, 4) * 10, normal (-0.8, 0.6),
+    // offset (-8, 6) = 10 normals.
+    let a = Line::new(Point::new(12, 2), Point::new(42, 42));
+    let b = Line::new(Point::new(4, 8), Point::new(34, 48));
+    let mut d = SimDisplay::new(56, 56, Gray8::BLACK);
+    for line in [a, b] {
+        line.stroke(Gray8::WHITE)
+            .stroke_width(10)
+            .draw(&mut d)
+            .unwrap();
+    }
+    // The union is the rectangle of width 10 around the shared side.
+    let both = |x: i64, y: i64| {
+        let (ma, mb) = (rect_margin(a, 10, x, y), rect_margin(b, 10, x, y));
+        ma.max(mb)
+    };
+    let mut shared = 0;
+    for y in 0..56 {
+        for x in 0..56 {
+            let c = d.write_count(Point::new(x as i32, y as i32)).unwrap();
+            assert!(c <= 1, "({x}, {y}) written {c} times");
+            let (ma, mb) = (rect_margin(a, 10, x, y), rect_margin(b, 10, x, y));
+            if ma.abs() < 1e-9 && mb.abs() < 1e-9 {
+                shared += 1; // a centre on the shared side: exactly one of them
+                assert_eq!(c, 1);
+            } else if both(x, y) > 1e-3 || (ma > -1e-3 && mb > -1e-3) {
+                assert_eq!(c, 1, "gap at ({x}, {y})");
+            }
+        }
+    }
+    assert!(shared > 0, "the test should hit centres on the shared side");
+}
