@@ -40,7 +40,9 @@ mod target {
         primitives::Rectangle,
         Drawable, Pixel,
     };
-    use embedded_raster::{FillRule, Line, Polygon, StepWidth, StyledLine, Triangle, Vertex};
+    use embedded_raster::{
+        FillRule, Line, Polygon, StepWidth, StyledLine, Triangle, TriangleAlgorithm, Vertex,
+    };
 
     use super::builtin_scene::{self, SceneBuffer, HUGE, SCREEN, TWIN};
 
@@ -128,6 +130,8 @@ mod target {
     #[derive(Clone, Copy)]
     enum Batch<'a> {
         Triangles(&'a [(Triangle, Rgb565)]),
+        /// Triangles drawn by a chosen [`TriangleAlgorithm`].
+        Variants(TriangleAlgorithm, &'a [(Triangle, Rgb565)]),
         Rects(&'a [Rectangle]),
         Lines(&'a [StyledLine<Rgb565>]),
         Polygons(&'a [(&'a [Vertex], FillRule)]),
@@ -136,7 +140,7 @@ mod target {
     impl Batch<'_> {
         fn len(self) -> usize {
             match self {
-                Batch::Triangles(ts) => ts.len(),
+                Batch::Triangles(ts) | Batch::Variants(_, ts) => ts.len(),
                 Batch::Rects(rs) => rs.len(),
                 Batch::Lines(ls) => ls.len(),
                 Batch::Polygons(ps) => ps.len(),
@@ -146,6 +150,9 @@ mod target {
         fn draw<D: DrawTarget<Color = Rgb565>>(self, target: &mut D) -> Result<(), D::Error> {
             match self {
                 Batch::Triangles(ts) => ts.iter().try_for_each(|(t, c)| t.fill(*c).draw(target)),
+                Batch::Variants(a, ts) => ts
+                    .iter()
+                    .try_for_each(|(t, c)| t.fill(*c).algorithm(a).draw(target)),
                 Batch::Rects(rs) => rs.iter().try_for_each(|r| target.fill_solid(r, BLUE)),
                 Batch::Lines(ls) => ls.iter().try_for_each(|l| l.draw(target)),
                 Batch::Polygons(ps) => ps.iter().try_for_each(|&(v, rule)| {
@@ -343,6 +350,23 @@ mod target {
             batch,
             false,
         );
+
+        // Every triangle algorithm on the same triangles (issue: speed for
+        // accuracy); the exact one again, for ratios within the group.
+        for algorithm in TriangleAlgorithm::ALL {
+            let labels = match algorithm {
+                TriangleAlgorithm::EdgeExact => ["exact, 16 px", "exact, 64 px"],
+                TriangleAlgorithm::Barycentric => ["barycentric, 16 px", "barycentric, 64 px"],
+                TriangleAlgorithm::EdgeWalk => ["walk, 16 px", "walk, 64 px"],
+                TriangleAlgorithm::BresenhamWalk => ["bresenham, 16 px", "bresenham, 64 px"],
+            };
+            for ((size, count), label) in [(16, 64), (64, 15)].into_iter().zip(labels) {
+                let n = tiles(size, count, &mut ts);
+                let batch = Batch::Variants(algorithm, &ts[..n]);
+                let group = "triangle algorithms";
+                row(&mut counter, FB, RECTS, group, label, batch, false);
+            }
+        }
 
         // The same pixels in 32 and 64 bits.
         for (t, label) in [

@@ -12,8 +12,11 @@
 //! | [`Vertex`] | 20.12 fixed-point positions (12 fractional bits) |
 //! | [`Triangle`], [`FilledTriangle`] | the exact edge-equation triangle rasterizer and its [`Drawable`] |
 //! | [`Span`] | the horizontal runs every filled shape is rasterized into |
+//! | [`TriangleAlgorithm`], [`SubpixelPrecision`] | selectable triangle variants (exact edge equations, barycentric bounding-box test, fixed-point edge walking, Bresenham edge walking) and vertex snapping to 0, 4, 8 or 12 subpixel bits, for trading accuracy for speed (measured in `BENCHMARKS.md`) |
 //! | [`line`](mod@line) | [`Line`], [`Polyline`] and their styles: exact Bresenham lines between any `i32` pixels, clipped before stepping (tie rule: the smaller coordinate), emitted as [`Run`]s; [`LineAlgorithm`] variants (DDA, naive); thick lines as two triangles |
 //! | [`Polygon`], [`FilledPolygon`], [`FillRule`] | the exact active-edge-table fill (even-odd and non-zero) with `heapless` storage of a chosen capacity, ear-clipping and fan triangulation, exact simple and convex tests |
+//! | [`shade`], [`GouraudTriangle`] | shading: the rounded average of vertex colours, Gouraud blends within 1 unit per channel (no per-pixel division), interpolated `u16` depth tested against a caller's [`DepthBuffer`](shade::DepthBuffer), each a separate type so flat-only code links none of it |
+//! | [`mesh`] | fixed-point 3D without floats: table sine/cosine, rotation, perspective projection to vertices and depths, an allocation-free latitude/longitude sphere |
 //! | [`framebuffer`] | [`Framebuffer`], an owned const-sized [`DrawTarget`] for Rgb565 (both byte orders), Rgb888, Gray8 and 1-bit |
 //! | `sim` (feature `sim`) | the host simulator: an overdraw-counting display, PNG export, the scene-file renderer |
 //!
@@ -66,7 +69,9 @@ mod clip;
 mod error;
 pub mod framebuffer;
 pub mod line;
+pub mod mesh;
 mod polygon;
+pub mod shade;
 #[cfg(feature = "sim")]
 pub mod sim;
 mod span;
@@ -83,6 +88,7 @@ pub use fixed::types::I20F12;
 pub use framebuffer::Framebuffer;
 pub use line::{Line, LineAlgorithm, Polyline, Run, StyledLine, StyledPolyline};
 pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError};
+pub use shade::GouraudTriangle;
 pub use span::Span;
-pub use triangle::{FilledTriangle, StepWidth, Triangle};
+pub use triangle::{FilledTriangle, StepWidth, SubpixelPrecision, Triangle, TriangleAlgorithm};
 pub use vertex::{ParseCoordinateError, Vertex, SUBPIXEL_BITS};

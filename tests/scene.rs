@@ -6,6 +6,8 @@
 mod cli;
 #[path = "scene/display.rs"]
 mod display;
+#[path = "scene/gtri.rs"]
+mod gtri;
 #[path = "scene/line.rs"]
 mod line;
 
@@ -47,10 +49,11 @@ fn unknown_commands() {
         error("size 8 8\n\n# c\nfoo 1 2\n"),
         err(4, "unknown command `foo`")
     );
-    // Commands of the contract that are not implemented yet are unknown,
-    // exactly like any other word, whatever their arguments.
+    // Words that are not commands (case matters) are unknown, whatever
+    // their arguments.
     for (word, args) in [
-        ("gtri", "0 0 #ff0000 8 0 #00ff00 0 8 #0000ff"),
+        ("circle", "4 4 3 #ff0000"),
+        ("GTRI", "0 0 #ff0000 8 0 #00ff00 0 8 #0000ff"),
         ("TRI", "0 0 1 0 0 1 #ffffff"),
         ("Size", "8 8"),
     ] {

@@ -2,7 +2,7 @@
 //! it can be tested without spawning a process.
 //!
 //! ```text
-//! render SCENE -o OUT.png [--counts COUNTS.pgm] [--stats]
+//! render SCENE -o OUT.png [--counts COUNTS.pgm] [--stats] [--algo NAME] [--bits N]
 //! ```
 //!
 //! # Examples
@@ -22,7 +22,8 @@ use std::path::{Path, PathBuf};
 use std::prelude::rust_2021::*;
 use std::{format, writeln};
 
-use super::{parse_scene, render_scene};
+use super::{parse_scene, render_scene_with};
+use crate::{SubpixelPrecision, TriangleAlgorithm};
 
 /// Exit code of a successful run (and of `--help`).
 ///
@@ -60,7 +61,7 @@ pub const EXIT_USAGE: i32 = 2;
 /// assert!(embedded_raster::sim::cli::USAGE.contains("--counts"));
 /// ```
 pub const USAGE: &str = "\
-usage: render SCENE -o OUT.png [--counts COUNTS.pgm] [--stats]
+usage: render SCENE -o OUT.png [--counts COUNTS.pgm] [--stats] [--algo NAME] [--bits N]
 
 Renders a scene file to an 8-bit RGB PNG.
 
@@ -70,6 +71,14 @@ options:
                            (P5, maxval 255, saturating)
   --stats                  print {\"primitives\":N,\"pixels_written\":N,\"raster_seconds\":S}
                            on stdout
+  --algo NAME              triangle algorithm for `tri` (default exact):
+                             exact        exact edge equations, top-left rule
+                             barycentric  exact, every pixel of the bounding box
+                             walk         edge walking, 16.16 fixed-point slopes
+                             bresenham    Bresenham edge walking, whole pixels,
+                                          closed triangle (overdraws shared edges)
+  --bits N                 subpixel bits vertices snap to: 0, 4, 8 or 12
+                           (default 12)
   -h, --help               print this help
 
 On a bad scene, prints `SCENE:LINE: what is wrong` on stderr, writes no
@@ -83,6 +92,8 @@ struct Options {
     output: PathBuf,
     counts: Option<PathBuf>,
     stats: bool,
+    algorithm: TriangleAlgorithm,
+    precision: SubpixelPrecision,
 }
 
 /// Runs the `render` command line on `args` (without the program name),
@@ -149,7 +160,30 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
     let mut output = None;
     let mut counts = None;
     let mut stats = false;
+    let mut algorithm = TriangleAlgorithm::EdgeExact;
+    let mut precision = SubpixelPrecision::Bits12;
     while let Some(arg) = args.next() {
+        match arg.to_str() {
+            Some("--algo") => {
+                let v = args.next().ok_or("`--algo` needs a name")?;
+                let name = v.to_string_lossy();
+                algorithm = TriangleAlgorithm::from_name(&name).ok_or_else(|| {
+                    format!("unknown algorithm `{name}` (exact, barycentric, walk, bresenham)")
+                })?;
+                continue;
+            }
+            Some("--bits") => {
+                let v = args.next().ok_or("`--bits` needs a number")?;
+                let text = v.to_string_lossy();
+                precision = text
+                    .parse()
+                    .ok()
+                    .and_then(SubpixelPrecision::from_bits)
+                    .ok_or_else(|| format!("`--bits` must be 0, 4, 8 or 12, got `{text}`"))?;
+                continue;
+            }
+            _ => {}
+        }
         let mut value = |slot: &mut Option<PathBuf>, name: &str| {
             let v = args
                 .next()
@@ -181,6 +215,8 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
         output: output.ok_or("missing `-o OUT.png`")?,
         counts,
         stats,
+        algorithm,
+        precision,
     }))
 }
 
@@ -197,7 +233,7 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<(), String> {
         format!("{scene_path}:{line}: not valid UTF-8")
     })?;
     let scene = parse_scene(text).map_err(|e| format!("{scene_path}:{}: {e}", e.line))?;
-    let rendered = render_scene(&scene);
+    let rendered = render_scene_with(&scene, options.algorithm, options.precision);
 
     let mut png = Vec::new();
     rendered

@@ -14,7 +14,7 @@ use embedded_graphics_core::{
 
 use super::{scene::SCENE_POLYGON_CAPACITY, Command, Scene, SimDisplay};
 use crate::clip::Bounds;
-use crate::{Polygon, Polyline};
+use crate::{Polygon, Polyline, SubpixelPrecision, TriangleAlgorithm};
 
 /// The part of `rect` inside `clip`, or `None` if there is none.
 fn clip(rect: &Rectangle, clip: &Rectangle) -> Option<Rectangle> {
@@ -31,7 +31,8 @@ impl Command {
     /// `rect` clipped to the target's bounding box (without overflow, for
     /// any position and size) and then, unless nothing is left, with one
     /// [`DrawTarget::fill_solid`] call, `tri` as a
-    /// [`FilledTriangle`](crate::FilledTriangle), `line` and `polyline` as
+    /// [`FilledTriangle`](crate::FilledTriangle), `gtri` as a
+    /// [`GouraudTriangle`](crate::GouraudTriangle), `line` and `polyline` as
     /// 1-pixel Bresenham [`Line`](crate::Line) and
     /// [`Polyline`] strokes. Nothing is drawn outside the target.
     ///
@@ -61,6 +62,7 @@ impl Command {
                 None => Ok(()),
             },
             Self::Tri(triangle, color) => triangle.fill(*color).draw(target),
+            Self::Gtri(triangle, colors) => triangle.gouraud(*colors).draw(target),
             Self::Line(line, color) => line.stroke(*color).draw(target),
             Self::Polyline(points, color) => Polyline::new(points).stroke(*color).draw(target),
             Self::Poly(vertices, rule, color) => {
@@ -71,6 +73,45 @@ impl Command {
                     Err(_) => Ok(()),
                 }
             }
+        }
+    }
+}
+
+impl Command {
+    /// Like [`draw`](Self::draw), but a `tri` is filled by `algorithm` at
+    /// `precision` (see [`TriangleAlgorithm`]); other commands draw as
+    /// with `draw`.
+    ///
+    /// # Errors
+    ///
+    /// Any error of `target`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{pixelcolor::Rgb888, prelude::*};
+    /// use embedded_raster::sim::{parse_scene, SimDisplay};
+    /// use embedded_raster::{SubpixelPrecision, TriangleAlgorithm};
+    ///
+    /// let scene = parse_scene("size 8 8\ntri 0 0 4 0 0 4 #00ff00")?;
+    /// let mut display = SimDisplay::new(8, 8, Rgb888::BLACK);
+    /// let Ok(()) = scene.commands()[0].draw_with(&mut display, TriangleAlgorithm::BresenhamWalk, SubpixelPrecision::Bits12);
+    /// assert_eq!(display.pixels_written(), 15);
+    /// # Ok::<(), embedded_raster::sim::SceneError>(())
+    /// ```
+    pub fn draw_with<D: DrawTarget<Color = Rgb888>>(
+        &self,
+        target: &mut D,
+        algorithm: TriangleAlgorithm,
+        precision: SubpixelPrecision,
+    ) -> Result<(), D::Error> {
+        match self {
+            Self::Tri(triangle, color) => triangle
+                .fill(*color)
+                .algorithm(algorithm)
+                .precision(precision)
+                .draw(target),
+            other => other.draw(target),
         }
     }
 }
@@ -168,11 +209,38 @@ impl RenderStats {
 /// # Ok::<(), embedded_raster::sim::SceneError>(())
 /// ```
 pub fn render_scene(scene: &Scene) -> Rendered {
+    render_scene_with(
+        scene,
+        TriangleAlgorithm::EdgeExact,
+        SubpixelPrecision::Bits12,
+    )
+}
+
+/// Like [`render_scene`], with `tri` commands drawn by `algorithm` at
+/// `precision` (see [`Command::draw_with`]).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::sim::{parse_scene, render_scene_with};
+/// use embedded_raster::{SubpixelPrecision, TriangleAlgorithm};
+///
+/// let scene = parse_scene("size 16 16\ntri 0 0 16 0 0 16 #FF0000\ntri 16 0 16 16 0 16 #0000ff")?;
+/// let closed = render_scene_with(&scene, TriangleAlgorithm::BresenhamWalk, SubpixelPrecision::Bits12);
+/// // Both triangles light their shared diagonal.
+/// assert!(closed.display.counts().iter().any(|&c| c == 2));
+/// # Ok::<(), embedded_raster::sim::SceneError>(())
+/// ```
+pub fn render_scene_with(
+    scene: &Scene,
+    algorithm: TriangleAlgorithm,
+    precision: SubpixelPrecision,
+) -> Rendered {
     let size = scene.size();
     let mut display = SimDisplay::new(size.width, size.height, Rgb888::BLACK);
     let start = Instant::now();
     for command in scene.commands() {
-        let Ok(()) = command.draw(&mut display);
+        let Ok(()) = command.draw_with(&mut display, algorithm, precision);
     }
     let raster_time = start.elapsed();
     let stats = RenderStats {

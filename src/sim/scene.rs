@@ -8,6 +8,7 @@
 //! clear #RRGGBB
 //! rect X Y W H #RRGGBB
 //! tri X0 Y0 X1 Y1 X2 Y2 #RRGGBB
+//! gtri X0 Y0 #C0 X1 Y1 #C1 X2 Y2 #C2
 //! line X0 Y0 X1 Y1 #RRGGBB
 //! polyline #RRGGBB X0 Y0 X1 Y1 ...
 //! ```
@@ -104,6 +105,9 @@ pub enum Command {
     Rect(Rectangle, Rgb888),
     /// `tri X0 Y0 X1 Y1 X2 Y2 #RRGGBB`: fill a triangle.
     Tri(Triangle, Rgb888),
+    /// `gtri X0 Y0 #C0 X1 Y1 #C1 X2 Y2 #C2`: a Gouraud triangle, one colour
+    /// per vertex.
+    Gtri(Triangle, [Rgb888; 3]),
     /// `line X0 Y0 X1 Y1 #RRGGBB`: a 1-pixel line between two pixels.
     Line(Line, Rgb888),
     /// `polyline #RRGGBB X0 Y0 X1 Y1 ...`: connected 1-pixel lines through
@@ -234,6 +238,14 @@ fn parse_command(word: &str, args: &[&str]) -> Result<Command, String> {
             let [x0, y0, x1, y1, x2, y2, c] = arity::<7>(word, args)?;
             let triangle = Triangle::new(vertex(x0, y0)?, vertex(x1, y1)?, vertex(x2, y2)?);
             Ok(Command::Tri(triangle, colour(c)?))
+        }
+        "gtri" => {
+            let [x0, y0, c0, x1, y1, c1, x2, y2, c2] = arity::<9>(word, args)?;
+            // Left to right, so the first bad token is the one reported.
+            let (v0, c0) = (vertex(x0, y0)?, colour(c0)?);
+            let (v1, c1) = (vertex(x1, y1)?, colour(c1)?);
+            let (v2, c2) = (vertex(x2, y2)?, colour(c2)?);
+            Ok(Command::Gtri(Triangle::new(v0, v1, v2), [c0, c1, c2]))
         }
         "line" => {
             let [x0, y0, x1, y1, c] = arity::<5>(word, args)?;

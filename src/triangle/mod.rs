@@ -1,8 +1,10 @@
 //! Filled triangles.
 
 mod raster;
+mod variants;
 
 pub use raster::StepWidth;
+pub use variants::{SubpixelPrecision, TriangleAlgorithm};
 
 use embedded_graphics_core::{
     draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor, primitives::Rectangle,
@@ -102,6 +104,8 @@ impl Triangle {
         FilledTriangle {
             triangle: self,
             color,
+            algorithm: TriangleAlgorithm::EdgeExact,
+            precision: SubpixelPrecision::Bits12,
         }
     }
 
@@ -139,6 +143,87 @@ impl Triangle {
         raster::rasterize(&self.vertices, clip, f)
     }
 
+    /// Like [`for_each_span`](Self::for_each_span), with the vertices
+    /// snapped to `precision` and the spans found by `algorithm` (see
+    /// [`TriangleAlgorithm`] for the pixels each lights). With
+    /// [`TriangleAlgorithm::EdgeExact`] and [`SubpixelPrecision::Bits12`]
+    /// it is `for_each_span`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use core::convert::Infallible;
+    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_raster::{Span, SubpixelPrecision, Triangle, TriangleAlgorithm, Vertex};
+    ///
+    /// let v = |x: i32, y: i32| Vertex::try_from_num(x, y).unwrap();
+    /// let t = Triangle::new(v(0, 0), v(4, 0), v(0, 4));
+    /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
+    /// let mut lit = 0;
+    /// t.for_each_span_with(TriangleAlgorithm::BresenhamWalk, SubpixelPrecision::Bits12, &clip, |s: Span| {
+    ///     lit += s.len();
+    ///     Ok::<(), Infallible>(())
+    /// })
+    /// .unwrap();
+    /// // The closed triangle of pixels (0, 0), (4, 0), (0, 4): 5 + 4 + 3 + 2 + 1.
+    /// assert_eq!(lit, 15);
+    /// ```
+    pub fn for_each_span_with<E>(
+        &self,
+        algorithm: TriangleAlgorithm,
+        precision: SubpixelPrecision,
+        clip: &Rectangle,
+        f: impl FnMut(Span) -> Result<(), E>,
+    ) -> Result<(), E> {
+        if algorithm == TriangleAlgorithm::EdgeExact && precision == SubpixelPrecision::Bits12 {
+            return raster::rasterize(&self.vertices, clip, f);
+        }
+        variants::rasterize(algorithm, precision, &self.vertices, clip, f)
+    }
+
+    /// This triangle with its vertices snapped to `precision` (see
+    /// [`SubpixelPrecision::snap`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::{SubpixelPrecision, Triangle, Vertex};
+    ///
+    /// let v = |x: f32, y: f32| Vertex::try_from_num(x, y).unwrap();
+    /// let t = Triangle::new(v(0.3, 0.0), v(4.0, 0.75), v(0.0, 4.0));
+    /// let s = t.snapped(SubpixelPrecision::Bits0);
+    /// assert_eq!(s, Triangle::new(v(0.0, 0.0), v(4.0, 1.0), v(0.0, 4.0)));
+    /// ```
+    pub fn snapped(&self, precision: SubpixelPrecision) -> Self {
+        Self {
+            vertices: self.vertices.map(|v| precision.snap(v)),
+        }
+    }
+
+    /// The integer width [`TriangleAlgorithm::Barycentric`] steps in for
+    /// this triangle at `precision` inside `clip`, or `None` if it scans
+    /// nothing. See [`SubpixelPrecision`] for the ranges.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_raster::{StepWidth, SubpixelPrecision, Triangle, Vertex};
+    ///
+    /// let clip = Rectangle::new(Point::zero(), Size::new(4000, 4000));
+    /// let v = |x: i32, y: i32| Vertex::try_from_num(x, y).unwrap();
+    /// let t = Triangle::new(v(0, 0), v(2000, 0), v(0, 2000));
+    /// assert_eq!(t.barycentric_step_width(SubpixelPrecision::Bits12, &clip), Some(StepWidth::Bits64));
+    /// assert_eq!(t.barycentric_step_width(SubpixelPrecision::Bits4, &clip), Some(StepWidth::Bits32));
+    /// ```
+    pub fn barycentric_step_width(
+        &self,
+        precision: SubpixelPrecision,
+        clip: &Rectangle,
+    ) -> Option<StepWidth> {
+        variants::barycentric_step_width(&self.vertices, precision, clip)
+    }
+
     /// The integer width [`for_each_span`](Self::for_each_span) steps the
     /// edge functions in for this triangle inside `clip`, or `None` if it
     /// has zero area or no candidate pixel inside `clip`. See
@@ -163,7 +248,9 @@ impl Triangle {
 /// A [`Triangle`] filled with one colour: a [`Drawable`] for any
 /// [`DrawTarget`]. Each row's span goes to the target as one
 /// [`fill_solid`](DrawTarget::fill_solid) call, clipped to the target's
-/// bounding box first.
+/// bounding box first. The spans come from [`algorithm`](Self::algorithm)
+/// at [`precision`](Self::precision) (by default the exact rasterizer at
+/// 12 bits).
 ///
 /// # Examples
 ///
@@ -191,6 +278,44 @@ pub struct FilledTriangle<C> {
     pub triangle: Triangle,
     /// The fill colour.
     pub color: C,
+    /// The rasterization algorithm.
+    pub algorithm: TriangleAlgorithm,
+    /// The subpixel precision vertices are snapped to.
+    pub precision: SubpixelPrecision,
+}
+
+impl<C> FilledTriangle<C> {
+    /// Draws with `algorithm` instead of the exact default.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_raster::{Triangle, TriangleAlgorithm};
+    ///
+    /// let t = Triangle::default().fill(BinaryColor::On).algorithm(TriangleAlgorithm::EdgeWalk);
+    /// assert_eq!(t.algorithm, TriangleAlgorithm::EdgeWalk);
+    /// ```
+    pub const fn algorithm(mut self, algorithm: TriangleAlgorithm) -> Self {
+        self.algorithm = algorithm;
+        self
+    }
+
+    /// Snaps the vertices to `precision` before drawing.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_raster::{SubpixelPrecision, Triangle};
+    ///
+    /// let t = Triangle::default().fill(BinaryColor::On).precision(SubpixelPrecision::Bits4);
+    /// assert_eq!(t.precision.bits(), 4);
+    /// ```
+    pub const fn precision(mut self, precision: SubpixelPrecision) -> Self {
+        self.precision = precision;
+        self
+    }
 }
 
 impl<C: PixelColor> Drawable for FilledTriangle<C> {
@@ -203,6 +328,8 @@ impl<C: PixelColor> Drawable for FilledTriangle<C> {
     {
         let clip = target.bounding_box();
         self.triangle
-            .for_each_span(&clip, |span| target.fill_solid(&span.rect(), self.color))
+            .for_each_span_with(self.algorithm, self.precision, &clip, |span| {
+                target.fill_solid(&span.rect(), self.color)
+            })
     }
 }

@@ -126,9 +126,9 @@ fn cli_without_options_writes_only_the_png() {
 fn cli_bad_scene_reports_one_line_and_writes_nothing() {
     let cases = [
         (
-            "size 8 8\nclear #000000\ngtri 0 0 #ff0000 8 0 #00ff00 0 8 #0000ff\n",
+            "size 8 8\nclear #000000\ngtri 0 0 #ff0000 8 0 #00ff00 0 8\n",
             3,
-            "unknown command `gtri`",
+            "`gtri` takes 9 arguments, got 8",
         ),
         (
             "size 8 8\ntri 0 0 1 1 2 #ffffff\n",

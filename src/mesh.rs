@@ -1,0 +1,312 @@
+//! Fixed-point 3D for small meshes: sine and cosine from a quarter-wave
+//! table, rotation, perspective projection to [`Vertex`]es and `u16`
+//! depths, and an allocation-free latitude/longitude sphere generator.
+//!
+//! Everything is integer: positions and matrix entries are Q15 (`32768` is
+//! 1.0), angles are `u16` fractions of a turn (`65536` is a full turn), no
+//! floating point and no `libm`.
+
+use crate::Vertex;
+
+/// 1.0 in Q15, the fixed-point format of [`Vec3`] and of [`sin_cos`].
+pub const ONE: i32 = 1 << 15;
+
+/// A quarter turn in the angle units of [`sin_cos`].
+pub const QUARTER_TURN: u16 = 1 << 14;
+
+/// `round(32768 sin(k pi / 256))` for `k = 0..=128`: a quarter wave.
+const SINE: [u16; 129] = [
+    0, 402, 804, 1206, 1608, 2009, 2411, 2811, 3212, 3612, 4011, 4410, 4808, 5205, 5602, 5998,
+    6393, 6787, 7180, 7571, 7962, 8351, 8740, 9127, 9512, 9896, 10279, 10660, 11039, 11417, 11793,
+    12167, 12540, 12910, 13279, 13646, 14010, 14373, 14733, 15091, 15447, 15800, 16151, 16500,
+    16846, 17190, 17531, 17869, 18205, 18538, 18868, 19195, 19520, 19841, 20160, 20475, 20788,
+    21097, 21403, 21706, 22006, 22302, 22595, 22884, 23170, 23453, 23732, 24008, 24279, 24548,
+    24812, 25073, 25330, 25583, 25833, 26078, 26320, 26557, 26791, 27020, 27246, 27467, 27684,
+    27897, 28106, 28311, 28511, 28707, 28899, 29086, 29269, 29448, 29622, 29792, 29957, 30118,
+    30274, 30425, 30572, 30715, 30853, 30986, 31114, 31238, 31357, 31471, 31581, 31686, 31786,
+    31881, 31972, 32058, 32138, 32214, 32286, 32352, 32413, 32470, 32522, 32568, 32610, 32647,
+    32679, 32706, 32729, 32746, 32758, 32766, 32768,
+];
+
+/// `32768 sin(w pi / 32768)` for `w` in `0..=16384`, by linear
+/// interpolation between table entries 128 units apart.
+fn quarter(w: u32) -> i32 {
+    let (i, f) = ((w >> 7) as usize, (w & 127) as i32);
+    let a = i32::from(SINE[i]);
+    let b = i32::from(SINE[(i + 1).min(128)]);
+    a + (((b - a) * f + 64) >> 7)
+}
+
+/// Sine and cosine of `angle` (in units of a turn / 65536) in Q15.
+///
+/// Linear interpolation in a 129-entry quarter-wave table: each result is
+/// within 2 units (`2^-14`) of the exact value (interpolation error at most
+/// `(pi / 256)^2 / 8 * 32768 < 0.62`, plus two roundings of 1/2), checked
+/// for every angle in the tests.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::mesh::{sin_cos, ONE, QUARTER_TURN};
+///
+/// assert_eq!(sin_cos(0), (0, ONE));
+/// assert_eq!(sin_cos(QUARTER_TURN), (ONE, 0));
+/// let (s, c) = sin_cos(QUARTER_TURN / 3); // 30 degrees
+/// assert!((s - ONE / 2).abs() <= 2 && (c - 28378).abs() <= 2);
+/// ```
+pub fn sin_cos(angle: u16) -> (i32, i32) {
+    let sin = |a: u16| {
+        let w = u32::from(a & (QUARTER_TURN - 1));
+        match a >> 14 {
+            0 => quarter(w),
+            1 => quarter(16384 - w),
+            2 => -quarter(w),
+            _ => -quarter(16384 - w),
+        }
+    };
+    (sin(angle), sin(angle.wrapping_add(QUARTER_TURN)))
+}
+
+/// A point or direction in Q15 fixed point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Vec3 {
+    /// Right.
+    pub x: i32,
+    /// Up.
+    pub y: i32,
+    /// Away from the viewer.
+    pub z: i32,
+}
+
+impl Vec3 {
+    /// A vector from its components.
+    pub const fn new(x: i32, y: i32, z: i32) -> Self {
+        Self { x, y, z }
+    }
+
+    /// The dot product, in Q15 (rounded), computed in `i64`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::mesh::{Vec3, ONE};
+    ///
+    /// let half = Vec3::new(ONE / 2, 0, 0);
+    /// assert_eq!(half.dot(Vec3::new(ONE, ONE, 0)), ONE / 2);
+    /// ```
+    pub fn dot(self, o: Self) -> i32 {
+        let d = i64::from(self.x) * i64::from(o.x)
+            + i64::from(self.y) * i64::from(o.y)
+            + i64::from(self.z) * i64::from(o.z);
+        ((d + (1 << 14)) >> 15) as i32
+    }
+}
+
+/// A rotation matrix in Q15.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Rotation {
+    /// Rows of the matrix.
+    pub m: [[i32; 3]; 3],
+}
+
+impl Rotation {
+    /// Turns by `yaw` about the vertical axis, then by `pitch` about the
+    /// horizontal one (angles in turns / 65536).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::mesh::{Rotation, Vec3, ONE, QUARTER_TURN};
+    ///
+    /// let r = Rotation::new(QUARTER_TURN, 0);
+    /// assert_eq!(r.apply(Vec3::new(ONE, 0, 0)), Vec3::new(0, 0, -ONE));
+    /// ```
+    pub fn new(yaw: u16, pitch: u16) -> Self {
+        let (sy, cy) = sin_cos(yaw);
+        let (sp, cp) = sin_cos(pitch);
+        let mul = |a: i32, b: i32| ((i64::from(a) * i64::from(b) + (1 << 14)) >> 15) as i32;
+        // Rx(pitch) * Ry(yaw).
+        Self {
+            m: [
+                [cy, 0, sy],
+                [mul(sp, sy), cp, -mul(sp, cy)],
+                [-mul(cp, sy), sp, mul(cp, cy)],
+            ],
+        }
+    }
+
+    /// The rotated vector, rounded to Q15.
+    pub fn apply(&self, v: Vec3) -> Vec3 {
+        let row = |r: [i32; 3]| Vec3::new(r[0], r[1], r[2]).dot(v);
+        Vec3::new(row(self.m[0]), row(self.m[1]), row(self.m[2]))
+    }
+}
+
+/// A pinhole camera at the origin looking along `+z`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Camera {
+    /// Focal length in pixels: a point at depth `z` and height `y` lands
+    /// `focal * y / z` px above the centre.
+    pub focal: i32,
+    /// Screen position of the optical axis, in pixels.
+    pub centre: (i32, i32),
+    /// Nearest and farthest depth (Q15 units, `0 < near < far`) mapped to
+    /// the depth buffer's `0` and `65534`.
+    pub near: i32,
+    /// See [`near`](Self::near).
+    pub far: i32,
+}
+
+impl Camera {
+    /// Projects `p` (camera space, Q15) to a sub-pixel screen position and
+    /// a depth for [`DepthBuffer`](crate::shade::DepthBuffer)s: `65534 far
+    /// (z - near) / (z (far - near))`, clamped to `0..=65534`. It is affine
+    /// in `1 / z`, so interpolating it linearly across a projected triangle
+    /// is exact (perspective-correct depth). `None` if `z <= 0` or the
+    /// position is outside the 20.12 range.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::mesh::{Camera, Vec3, ONE};
+    ///
+    /// let cam = Camera { focal: 100, centre: (64, 64), near: ONE, far: 5 * ONE };
+    /// let (v, z) = cam.project(Vec3::new(ONE, ONE, 2 * ONE)).unwrap();
+    /// assert_eq!(v.raw(), (114 << 12, 14 << 12)); // y up on the plane, down on screen
+    /// assert_eq!(cam.project(Vec3::new(0, 0, ONE)).unwrap().1, 0);
+    /// assert_eq!(cam.project(Vec3::new(0, 0, 5 * ONE)).unwrap().1, 65534);
+    /// assert!(z > 0 && z < 65534);
+    /// ```
+    pub fn project(&self, p: Vec3) -> Option<(Vertex, u16)> {
+        if p.z <= 0 {
+            return None;
+        }
+        let z = i128::from(p.z);
+        let scale = i128::from(self.focal) * 4096;
+        let div = |n: i128| {
+            let q = (2 * n + z).div_euclid(2 * z);
+            i32::try_from(q).ok()
+        };
+        let x = div(scale * i128::from(p.x))?.checked_add(self.centre.0.checked_mul(4096)?)?;
+        let y = self
+            .centre
+            .1
+            .checked_mul(4096)?
+            .checked_sub(div(scale * i128::from(p.y))?)?;
+        let (near, far) = (i128::from(self.near), i128::from(self.far));
+        let depth = if far > near && near > 0 {
+            (65534 * far * (z - near) / (z * (far - near))).clamp(0, 65534)
+        } else {
+            0
+        };
+        Some((Vertex::from_raw(x, y), depth as u16))
+    }
+}
+
+/// Why [`sphere`] could not build a mesh.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum MeshError {
+    /// Fewer than 2 rings or 3 segments, or more vertices than `u16`
+    /// indices reach.
+    BadDivisions,
+    /// The storage is too small: it needs this many vertices and triangles
+    /// ([`sphere_size`]).
+    StorageTooSmall {
+        /// Vertices needed.
+        vertices: usize,
+        /// Triangles needed.
+        triangles: usize,
+    },
+}
+
+/// The number of vertices and triangles of [`sphere`]`(rings, segments)`:
+/// `(2 + segments (rings - 1), 2 segments (rings - 1))`.
+///
+/// # Examples
+///
+/// ```
+/// assert_eq!(embedded_raster::mesh::sphere_size(8, 16), (114, 224));
+/// ```
+pub const fn sphere_size(rings: u16, segments: u16) -> (usize, usize) {
+    let (r, s) = (rings as usize, segments as usize);
+    let bands = r.saturating_sub(1);
+    (2 + s * bands, 2 * s * bands)
+}
+
+/// Builds a unit sphere (radius [`ONE`]) by latitude and longitude into
+/// caller-provided storage: `rings` bands from pole to pole (`rings - 1`
+/// circles of latitude between the poles) and `segments` meridians.
+/// Vertex 0 is the north pole `(0, ONE, 0)`, the last the south pole; each
+/// vertex is also its own outward unit normal. Triangles are vertex index
+/// triples `[a, b, c]`, all wound the same way: `(b - a) x (c - a)` points
+/// outward, so after projection (y flips) outward faces have one sign of
+/// area and back faces the other. Returns the numbers of vertices and triangles written
+/// ([`sphere_size`]).
+///
+/// # Errors
+///
+/// [`MeshError`] for too few divisions or too little storage.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::mesh::{sphere, sphere_size, Vec3, ONE};
+///
+/// let mut vertices = [Vec3::default(); 114];
+/// let mut triangles = [[0u16; 3]; 224];
+/// assert_eq!(sphere(8, 16, &mut vertices, &mut triangles), Ok(sphere_size(8, 16)));
+/// assert_eq!(vertices[0], Vec3::new(0, ONE, 0));
+/// // Every vertex is on the sphere, up to the trigonometry's rounding.
+/// assert!(vertices.iter().all(|v| (v.dot(*v) - ONE).abs() < 8));
+/// ```
+pub fn sphere(
+    rings: u16,
+    segments: u16,
+    vertices: &mut [Vec3],
+    triangles: &mut [[u16; 3]],
+) -> Result<(usize, usize), MeshError> {
+    let (nv, nt) = sphere_size(rings, segments);
+    if rings < 2 || segments < 3 || nv > usize::from(u16::MAX) {
+        return Err(MeshError::BadDivisions);
+    }
+    if vertices.len() < nv || triangles.len() < nt {
+        return Err(MeshError::StorageTooSmall {
+            vertices: nv,
+            triangles: nt,
+        });
+    }
+    let (r, s) = (u32::from(rings), u32::from(segments));
+    let mul = |a: i32, b: i32| ((i64::from(a) * i64::from(b) + (1 << 14)) >> 15) as i32;
+    vertices[0] = Vec3::new(0, ONE, 0);
+    vertices[nv - 1] = Vec3::new(0, -ONE, 0);
+    for i in 1..r {
+        // Polar angle i / rings of a half turn.
+        let (sin_t, cos_t) = sin_cos((i * 32768 / r) as u16);
+        for j in 0..s {
+            let (sin_p, cos_p) = sin_cos((j * 65536 / s) as u16);
+            let k = 1 + ((i - 1) * s + j) as usize;
+            vertices[k] = Vec3::new(mul(sin_t, cos_p), cos_t, mul(sin_t, sin_p));
+        }
+    }
+    // `nv <= 65535`, so every index fits in u16.
+    let at = |i: u32, j: u32| (1 + (i - 1) * s + j % s) as u16;
+    let south = (nv - 1) as u16;
+    let mut t = 0;
+    let mut push = |tri: [u16; 3]| {
+        triangles[t] = tri;
+        t += 1;
+    };
+    for j in 0..s {
+        push([0, at(1, j + 1), at(1, j)]);
+        for i in 1..r - 1 {
+            push([at(i, j), at(i, j + 1), at(i + 1, j + 1)]);
+            push([at(i, j), at(i + 1, j + 1), at(i + 1, j)]);
+        }
+        push([at(r - 1, j), at(r - 1, j + 1), south]);
+    }
+    Ok((nv, nt))
+}

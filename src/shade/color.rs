@@ -1,0 +1,110 @@
+//! Colours as integer channels: what shading blends.
+
+use embedded_graphics_core::pixelcolor::{
+    BinaryColor, Gray8, GrayColor, PixelColor, Rgb565, Rgb888, RgbColor,
+};
+
+/// A colour made of up to three integer channels, each blended in its own
+/// range (`0..=31` / `0..=63` / `0..=31` for `Rgb565`, `0..=255` for `Rgb888`
+/// and `Gray8`, `0..=1` for `BinaryColor`).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_raster::shade::ShadeColor;
+///
+/// let c = Rgb565::new(31, 40, 2);
+/// assert_eq!(c.channels(), [31, 40, 2]);
+/// assert_eq!(Rgb565::from_channels([31, 40, 2]), c);
+/// assert_eq!(Rgb565::MAX, [31, 63, 31]);
+/// ```
+pub trait ShadeColor: PixelColor {
+    /// How many of the three channels are used (the rest are 0).
+    const CHANNELS: usize;
+    /// The largest value of each channel.
+    const MAX: [u8; 3];
+    /// The channels.
+    fn channels(self) -> [u8; 3];
+    /// The colour with these channels; each is at most its [`MAX`](Self::MAX).
+    fn from_channels(channels: [u8; 3]) -> Self;
+}
+
+impl ShadeColor for Rgb565 {
+    const CHANNELS: usize = 3;
+    const MAX: [u8; 3] = [31, 63, 31];
+    #[inline(always)]
+    fn channels(self) -> [u8; 3] {
+        [self.r(), self.g(), self.b()]
+    }
+    #[inline(always)]
+    fn from_channels([r, g, b]: [u8; 3]) -> Self {
+        Self::new(r, g, b)
+    }
+}
+
+impl ShadeColor for Rgb888 {
+    const CHANNELS: usize = 3;
+    const MAX: [u8; 3] = [255; 3];
+    #[inline(always)]
+    fn channels(self) -> [u8; 3] {
+        [self.r(), self.g(), self.b()]
+    }
+    #[inline(always)]
+    fn from_channels([r, g, b]: [u8; 3]) -> Self {
+        Self::new(r, g, b)
+    }
+}
+
+impl ShadeColor for Gray8 {
+    const CHANNELS: usize = 1;
+    const MAX: [u8; 3] = [255, 0, 0];
+    #[inline(always)]
+    fn channels(self) -> [u8; 3] {
+        [self.luma(), 0, 0]
+    }
+    #[inline(always)]
+    fn from_channels([l, _, _]: [u8; 3]) -> Self {
+        Self::new(l)
+    }
+}
+
+impl ShadeColor for BinaryColor {
+    const CHANNELS: usize = 1;
+    const MAX: [u8; 3] = [1, 0, 0];
+    #[inline(always)]
+    fn channels(self) -> [u8; 3] {
+        [u8::from(self.is_on()), 0, 0]
+    }
+    #[inline(always)]
+    fn from_channels([on, _, _]: [u8; 3]) -> Self {
+        Self::from(on != 0)
+    }
+}
+
+/// The rounded per-channel average of three colours: for each channel sum
+/// `s`, `(2 s + 3) / 6` in integers, i.e. `s / 3` rounded to the nearest
+/// integer (a third never ends in a half). For `BinaryColor` this is the
+/// majority.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{BinaryColor, Rgb888};
+/// use embedded_raster::shade::average_color;
+///
+/// let c = average_color([Rgb888::new(255, 0, 10), Rgb888::new(0, 0, 10), Rgb888::new(0, 1, 11)]);
+/// assert_eq!(c, Rgb888::new(85, 0, 10)); // 255/3, 1/3 -> 0, 31/3 = 10.33 -> 10
+/// let on = average_color([BinaryColor::On, BinaryColor::Off, BinaryColor::On]);
+/// assert_eq!(on, BinaryColor::On);
+/// ```
+pub fn average_color<C: ShadeColor>(colors: [C; 3]) -> C {
+    let [a, b, c] = colors.map(ShadeColor::channels);
+    let mut out = [0u8; 3];
+    for k in 0..3 {
+        let s = u16::from(a[k]) + u16::from(b[k]) + u16::from(c[k]);
+        // (2 s + 3) / 6 <= (2 * 765 + 3) / 6 = 255.
+        out[k] = ((2 * s + 3) / 6) as u8;
+    }
+    C::from_channels(out)
+}

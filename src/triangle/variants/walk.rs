@@ -1,0 +1,128 @@
+//! Edge walking with a flat-bottom/flat-top split and 16.16 fixed-point
+//! edges.
+//!
+//! Rows are decided exactly from the raw y coordinates: row `j` (centre
+//! `yc = 4096 j + 2048` raw) is scanned iff `y_top <= yc < y_bottom`, the
+//! upper part (`yc < y_mid`) between the long edge and the edge top→mid,
+//! the lower part between the long edge and mid→bottom. Each edge is
+//! walked from its upper end: its x at its first row is computed exactly
+//! and rounded down to 1/65536 px, and every further row adds the slope,
+//! `dx / dy` per row rounded down to 1/65536 px. The x at any row is
+//! `start + n * slope`, so clipping rows away does not change it.
+//!
+//! Values: x is at most `2^19` px (`2^35` units), the start's product
+//! `dx (yc - y_a)` and the slope's `4096 dx` are below `2^48`, and
+//! `n * slope` is at most `|dx| + n` units, so `i64` holds every value
+//! (the orientation test alone needs `i128`, for differences over `2^31`
+//! raw units).
+
+use embedded_graphics_core::primitives::Rectangle;
+
+use crate::{clip::Bounds, Span, Vertex};
+
+/// Fractional bits of x positions and slopes.
+const FRAC: u32 = 16;
+
+/// The first row whose centre is at or below raw `y`.
+fn row_of(y: i64) -> i64 {
+    (y - 2048 + 4095) >> 12
+}
+
+/// One edge, walked down from its upper end.
+#[derive(Clone, Copy)]
+struct Edge {
+    /// Its first row, and x there in 16.16.
+    first: i64,
+    start: i64,
+    /// x change per row in 16.16, rounded down.
+    slope: i64,
+}
+
+impl Edge {
+    /// The edge from `a` to `b` (raw, `a.1 < b.1`).
+    fn new(a: (i64, i64), b: (i64, i64)) -> Self {
+        let first = row_of(a.1);
+        let dy = (b.1 - a.1).max(1);
+        // |dx| < 2^36 units and 0 <= yc - a.1 < 4096: products below 2^48.
+        let dx = (b.0 - a.0) << (FRAC - 12);
+        let yc = first * 4096 + 2048;
+        let xa = a.0 << (FRAC - 12);
+        Self {
+            first,
+            start: xa + (dx * (yc - a.1)).div_euclid(dy),
+            slope: (dx * 4096).div_euclid(dy),
+        }
+    }
+
+    /// x at row `j >= first`.
+    fn at(&self, j: i64) -> i64 {
+        self.start + (j - self.first) * self.slope
+    }
+}
+
+/// Calls `emit` with each row's span of the snapped `v` inside `clip`.
+pub(super) fn rasterize<E>(
+    v: &[Vertex; 3],
+    clip: &Rectangle,
+    emit: &mut impl FnMut(Span) -> Result<(), E>,
+) -> Result<(), E> {
+    let mut p = v.map(|v| {
+        let (x, y) = v.raw();
+        (i64::from(x), i64::from(y))
+    });
+    p.sort_unstable_by_key(|t| (t.1, t.0));
+    let [top, mid, bot] = p;
+    // Differences reach 2^32 raw: the products need i128 unless every
+    // difference is under 2^31 (then each product is under 2^62).
+    let d = [mid.0 - top.0, bot.1 - top.1, mid.1 - top.1, bot.0 - top.0];
+    let cross = if d.iter().all(|v| v.unsigned_abs() < 1 << 31) {
+        (d[0] * d[1] - d[2] * d[3]).signum()
+    } else {
+        let w = d.map(i128::from);
+        (w[0] * w[1] - w[2] * w[3]).signum() as i64
+    };
+    if cross == 0 {
+        return Ok(());
+    }
+    let long_left = cross > 0;
+    let c = Bounds::of(clip);
+    let long = Edge::new(top, bot);
+    let halves = [
+        (row_of(top.1), row_of(mid.1), (top, mid)),
+        (row_of(mid.1), row_of(bot.1), (mid, bot)),
+    ];
+    let half_px = 1i64 << (FRAC - 1);
+    let one = 1i64 << FRAC;
+    for (j0, j1, (a, b)) in halves {
+        let (j0, j1) = (j0.max(c.y0), j1.min(c.y1));
+        if j0 >= j1 {
+            continue;
+        }
+        let short = Edge::new(a, b);
+        let (mut xl, mut xr) = (long.at(j0), short.at(j0));
+        let (mut dl, mut dr) = (long.slope, short.slope);
+        if !long_left {
+            core::mem::swap(&mut xl, &mut xr);
+            core::mem::swap(&mut dl, &mut dr);
+        }
+        for j in j0..j1 {
+            if j > j0 {
+                xl += dl;
+                xr += dr;
+            }
+            // Pixels whose centre i + 1/2 lies in [xl, xr).
+            let i0 = ((xl - half_px + one - 1) >> FRAC).max(c.x0);
+            let i1 = ((xr - half_px + one - 1) >> FRAC).min(c.x1);
+            if i0 < i1 {
+                // Inside the clip rectangle, so every value fits in i32.
+                let (Ok(y), Ok(x_start), Ok(x_end)) =
+                    (i32::try_from(j), i32::try_from(i0), i32::try_from(i1))
+                else {
+                    continue;
+                };
+                emit(Span { y, x_start, x_end })?;
+            }
+        }
+    }
+    Ok(())
+}

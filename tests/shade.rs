@@ -1,0 +1,516 @@
+//! Shading against exact references: the vertex-colour average, Gouraud
+//! blends (within 1 unit per channel of the exact rational value, and
+//! exactly rounded unless within 2^-12 of a half), the pixel set, depth.
+//!
+//! Case counts follow `PROPTEST_CASES` (proptest's default, 256, when
+//! unset); CI's deep run raises it.
+#![cfg(feature = "sim")]
+
+use core::convert::Infallible;
+
+use embedded_graphics::draw_target::DrawTargetExt;
+use embedded_graphics_core::{
+    geometry::{Point, Size},
+    pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888},
+    prelude::*,
+    primitives::Rectangle,
+};
+use embedded_raster::{
+    shade::{average_color, DepthBuffer, ShadeColor},
+    sim::SimDisplay,
+    Span, Triangle, Vertex,
+};
+use proptest::prelude::*;
+
+const MIN: i64 = i32::MIN as i64;
+const MAX: i64 = i32::MAX as i64;
+
+fn v(x: i64, y: i64) -> Vertex {
+    Vertex::from_raw(x.clamp(MIN, MAX) as i32, y.clamp(MIN, MAX) as i32)
+}
+
+fn raw(t: &Triangle) -> [(i128, i128); 3] {
+    t.vertices.map(|v| {
+        let (x, y) = v.raw();
+        (i128::from(x), i128::from(y))
+    })
+}
+
+/// The exact value of an attribute at the centre of pixel `(i, j)` as
+/// `(n, d)` with `d > 0`: `sum(a_k w_k) / area2`, in `i128`, written out
+/// independently of the library (signed areas of the sub-triangles).
+fn exact(t: &Triangle, a: [i128; 3], i: i64, j: i64) -> (i128, i128) {
+    let p = raw(t);
+    let c = (i128::from(i) * 4096 + 2048, i128::from(j) * 4096 + 2048);
+    let cross = |o: (i128, i128), u: (i128, i128), w: (i128, i128)| {
+        (u.0 - o.0) * (w.1 - o.1) - (u.1 - o.1) * (w.0 - o.0)
+    };
+    let d = cross(p[0], p[1], p[2]);
+    // Weight of vertex k: the area of the triangle (c, v_(k+1), v_(k+2)).
+    let n = a[0] * cross(c, p[1], p[2]) + a[1] * cross(c, p[2], p[0]) + a[2] * cross(c, p[0], p[1]);
+    if d < 0 {
+        (-n, -d)
+    } else {
+        (n, d)
+    }
+}
+
+/// Checks output `o` against the exact `n / d`: within 1, and equal to the
+/// rounding (halves up) unless `n / d` is within 2^-12 of a half integer.
+fn check_value(o: i128, (n, d): (i128, i128)) -> Result<(), String> {
+    if (o * d - n).abs() >= d {
+        return Err(format!("{o} is 1 or more away from {n}/{d}"));
+    }
+    let rounded = (2 * n + d).div_euclid(2 * d);
+    if o != rounded && (2 * n - (o + rounded) * d).abs() * 4096 > 2 * d {
+        return Err(format!("{o} is not {n}/{d} rounded ({rounded})"));
+    }
+    Ok(())
+}
+
+/// Every span and pixel colour of the Gouraud triangle inside `clip`.
+fn shaded<C: ShadeColor>(t: &Triangle, colors: [C; 3], clip: &Rectangle) -> Vec<(Span, Vec<C>)> {
+    let mut out = Vec::new();
+    t.gouraud(colors)
+        .for_each_span(clip, |span, it| {
+            out.push((span, it.collect()));
+            Ok::<(), Infallible>(())
+        })
+        .unwrap();
+    out
+}
+
+fn flat_spans(t: &Triangle, clip: &Rectangle) -> Vec<Span> {
+    let mut out = Vec::new();
+    t.for_each_span(clip, |s| {
+        out.push(s);
+        Ok::<(), Infallible>(())
+    })
+    .unwrap();
+    out
+}
+
+/// Checks every pixel of the Gouraud triangle inside `clip` against the
+/// exact blend, and that its pixels are the flat triangle's.
+fn assert_blend<C: ShadeColor + core::fmt::Debug>(
+    t: &Triangle,
+    colors: [C; 3],
+    clip: &Rectangle,
+) -> Result<(), TestCaseError> {
+    let spans = shaded(t, colors, clip);
+    let flat = flat_spans(t, clip);
+    prop_assert_eq!(spans.iter().map(|s| s.0).collect::<Vec<_>>(), flat);
+    let ch = colors.map(ShadeColor::channels);
+    for (span, pixels) in &spans {
+        prop_assert_eq!(pixels.len(), span.len() as usize);
+        for (x, c) in (span.x_start..).zip(pixels) {
+            let got = c.channels();
+            for k in 0..C::CHANNELS {
+                let a = ch.map(|c| i128::from(c[k]));
+                let e = exact(t, a, i64::from(x), i64::from(span.y));
+                if let Err(msg) = check_value(i128::from(got[k]), e) {
+                    return Err(TestCaseError::fail(format!(
+                        "{t:?} {colors:?} pixel ({x}, {}), channel {k}: {msg}",
+                        span.y
+                    )));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+fn window(cx: i64, cy: i64, w: u32, h: u32) -> Rectangle {
+    let x = ((cx >> 12) - i64::from(w / 2)) as i32;
+    let y = ((cy >> 12) - i64::from(h / 2)) as i32;
+    Rectangle::new(Point::new(x, y), Size::new(w, h))
+}
+
+/// Half-extents in raw units, from a 4 px triangle to the whole range.
+const SCALES: [i64; 6] = [1 << 13, 1 << 15, 1 << 18, 1 << 22, 1 << 27, 1 << 32];
+
+prop_compose! {
+    fn any_scale()(
+        scale in 0..SCALES.len(),
+        c in (any::<i32>(), any::<i32>()),
+        d in prop::array::uniform6(any::<i64>()),
+    ) -> Triangle {
+        let r = SCALES[scale];
+        let (cx, cy) = if scale == SCALES.len() - 1 { (0, 0) } else { (i64::from(c.0), i64::from(c.1)) };
+        let off = |k: usize| d[k].rem_euclid(2 * r + 1) - r;
+        Triangle::new(v(cx + off(0), cy + off(1)), v(cx + off(2), cy + off(3)), v(cx + off(4), cy + off(5)))
+    }
+}
+
+prop_compose! {
+    /// The third vertex close to the line through the first two.
+    fn sliver()(
+        p0 in (-(1i64 << 30)..(1 << 30), -(1i64 << 30)..(1 << 30)),
+        d in (-(1i64 << 28)..(1 << 28), -(1i64 << 28)..(1 << 28)),
+        t in -2048i64..=6144,
+        off in (-3000i64..=3000, -3000i64..=3000),
+        tiny in any::<bool>(),
+    ) -> Triangle {
+        let (ox, oy) = if tiny { (off.0.signum(), off.1.signum()) } else { off };
+        Triangle::new(
+            v(p0.0, p0.1),
+            v(p0.0 + d.0, p0.1 + d.1),
+            v(p0.0 + d.0 * t / 4096 + ox, p0.1 + d.1 * t / 4096 + oy),
+        )
+    }
+}
+
+fn rgb888() -> impl Strategy<Value = [Rgb888; 3]> {
+    prop::array::uniform3(any::<[u8; 3]>().prop_map(|[r, g, b]| Rgb888::new(r, g, b)))
+}
+
+fn rgb565() -> impl Strategy<Value = [Rgb565; 3]> {
+    prop::array::uniform3((0u8..32, 0u8..64, 0u8..32).prop_map(|(r, g, b)| Rgb565::new(r, g, b)))
+}
+
+fn gray8() -> impl Strategy<Value = [Gray8; 3]> {
+    prop::array::uniform3(any::<u8>().prop_map(Gray8::new))
+}
+
+/// A window at a vertex or somewhere in the bounding box.
+fn focus(t: &Triangle, which: usize, f: (u16, u16)) -> (i64, i64) {
+    let r = raw(t).map(|(x, y)| (x as i64, y as i64));
+    if which < 3 {
+        return r[which];
+    }
+    let lerp = |a: i64, b: i64| a + ((b - a) as i128 * i128::from(f.0) / 65535) as i64;
+    let (x0, x1) = (
+        r.iter().map(|p| p.0).min().unwrap(),
+        r.iter().map(|p| p.0).max().unwrap(),
+    );
+    let (y0, y1) = (
+        r.iter().map(|p| p.1).min().unwrap(),
+        r.iter().map(|p| p.1).max().unwrap(),
+    );
+    (
+        lerp(x0, x1),
+        y0 + ((y1 - y0) as i128 * i128::from(f.1) / 65535) as i64,
+    )
+}
+
+proptest! {
+    /// The average against an independent formula: the channel sum over
+    /// three, rounded to nearest in floating point.
+    #[test]
+    fn average_is_the_rounded_mean(c in rgb888(), g in rgb565(), l in gray8()) {
+        let mean = |s: u32| (f64::from(s) / 3.0).round() as u8;
+        let sum = |k: usize, ch: [[u8; 3]; 3]| ch.iter().map(|c| u32::from(c[k])).sum::<u32>();
+        let a = average_color(c).channels();
+        let ch = c.map(ShadeColor::channels);
+        prop_assert_eq!(a, [mean(sum(0, ch)), mean(sum(1, ch)), mean(sum(2, ch))]);
+        let a = average_color(g).channels();
+        let ch = g.map(ShadeColor::channels);
+        prop_assert_eq!(a, [mean(sum(0, ch)), mean(sum(1, ch)), mean(sum(2, ch))]);
+        let a = average_color(l).channels();
+        let ch = l.map(ShadeColor::channels);
+        prop_assert_eq!(a[0], mean(sum(0, ch)));
+    }
+
+    #[test]
+    fn rgb888_blend_at_every_scale(t in any_scale(), c in rgb888(), which in 0usize..4, f in any::<(u16, u16)>(), w in 1u32..48, h in 1u32..48) {
+        let (cx, cy) = focus(&t, which, f);
+        assert_blend(&t, c, &window(cx, cy, w, h))?;
+    }
+
+    #[test]
+    fn rgb565_blend_at_every_scale(t in any_scale(), c in rgb565(), which in 0usize..4, f in any::<(u16, u16)>()) {
+        let (cx, cy) = focus(&t, which, f);
+        assert_blend(&t, c, &window(cx, cy, 40, 40))?;
+    }
+
+    #[test]
+    fn gray8_blend_at_every_scale(t in any_scale(), c in gray8(), which in 0usize..4, f in any::<(u16, u16)>()) {
+        let (cx, cy) = focus(&t, which, f);
+        assert_blend(&t, c, &window(cx, cy, 40, 40))?;
+    }
+
+    #[test]
+    fn blend_for_slivers(t in sliver(), c in rgb888(), which in 0usize..4, f in any::<(u16, u16)>()) {
+        let (cx, cy) = focus(&t, which, f);
+        assert_blend(&t, c, &window(cx, cy, 40, 40))?;
+    }
+
+    #[test]
+    fn blend_far_off_screen(t in any_scale(), c in rgb888(), w in 1u32..64, h in 1u32..64) {
+        assert_blend(&t, c, &Rectangle::new(Point::zero(), Size::new(w, h)))?;
+    }
+
+    /// Vertices on pixel centres: a lit vertex pixel has exactly that
+    /// vertex's colour.
+    #[test]
+    fn vertex_colours_at_vertices(p in prop::array::uniform6(-30i32..30), c in rgb888()) {
+        let t = Triangle::from_points(Point::new(p[0], p[1]), Point::new(p[2], p[3]), Point::new(p[4], p[5])).unwrap();
+        let clip = Rectangle::new(Point::new(-40, -40), Size::new(80, 80));
+        for (span, pixels) in shaded(&t, c, &clip) {
+            for (x, color) in (span.x_start..).zip(pixels) {
+                for k in 0..3 {
+                    if Point::new(x, span.y) == Point::new(p[2 * k], p[2 * k + 1]) {
+                        prop_assert_eq!(color, c[k]);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Along a horizontal top edge on pixel centres, the colours run
+    /// monotonically from one end's to the other's, per channel.
+    #[test]
+    fn monotonic_along_an_edge(x0 in -50i32..50, len in 1i32..400, below in (-500i32..500, 1i32..300), c in rgb888()) {
+        let t = Triangle::from_points(Point::new(x0, 0), Point::new(x0 + len, 0), Point::new(below.0, below.1)).unwrap();
+        let clip = Rectangle::new(Point::new(-1000, 0), Size::new(2000, 1));
+        let rows = shaded(&t, c, &clip);
+        prop_assert_eq!(rows.len(), 1);
+        let (span, pixels) = &rows[0];
+        prop_assert_eq!(span.x_start, x0);
+        prop_assert_eq!(pixels[0], c[0]);
+        for k in 0..3 {
+            let (a, b) = (c[0].channels()[k], c[1].channels()[k]);
+            let ch: Vec<u8> = pixels.iter().map(|p| p.channels()[k]).collect();
+            prop_assert!(ch.windows(2).all(|w| if a <= b { w[0] <= w[1] } else { w[0] >= w[1] }), "{:?}", ch);
+            prop_assert!(ch.iter().all(|&x| x >= a.min(b) && x <= a.max(b)));
+        }
+    }
+
+    /// Drawing on a display: one fill_contiguous per span, the same pixels
+    /// and colours as `for_each_span`, nothing else written.
+    #[test]
+    fn draws_one_fill_contiguous_per_span(t in any_scale(), c in rgb888(), f in any::<(u16, u16)>()) {
+        let (cx, cy) = focus(&t, 3, f);
+        let clip = window(cx, cy, 32, 24);
+        let spans = shaded(&t, c, &clip);
+        let mut display = SimDisplay::new(32, 24, Rgb888::BLACK);
+        // The display sits at the window: draw through a translated target.
+        let mut target = display.translated(-clip.top_left);
+        let Ok(()) = t.gouraud(c).draw(&mut target);
+        let stats = display.write_stats();
+        prop_assert_eq!(stats.fill_contiguous_calls, spans.len() as u64);
+        prop_assert_eq!(stats.fill_solid_calls + stats.draw_iter_pixels, 0);
+        for (span, pixels) in &spans {
+            for (x, color) in (span.x_start..).zip(pixels) {
+                let p = Point::new(x, span.y) - clip.top_left;
+                prop_assert_eq!(display.pixel(p), Some(*color));
+            }
+        }
+    }
+
+    /// A mesh of triangles in disjoint depth bands, drawn with depth in a
+    /// shuffled order, gives the painter's-algorithm image (far to near,
+    /// no depth test), whatever the order.
+    #[test]
+    fn depth_order_independence(
+        tris in prop::collection::vec((prop::array::uniform6(0i64..(48 << 12)), rgb888(), prop::array::uniform3(0u16..1000), any::<bool>()), 1..12),
+        order in any::<u64>(),
+    ) {
+        let mesh: Vec<_> = tris.iter().enumerate().map(|(i, (p, c, z, gouraud))| {
+            let t = Triangle::new(v(p[0], p[1]), v(p[2], p[3]), v(p[4], p[5]));
+            // Band i: depths 1000 i .. 1000 i + 999, nearer for larger i.
+            let band = 60_000 - 1000 * i as u16;
+            (t, *c, z.map(|z| band - z), *gouraud)
+        }).collect();
+        let draw = |display: &mut SimDisplay<Rgb888>, t: &Triangle, c: [Rgb888; 3], g: bool, depth: Option<(DepthBuffer<'_>, [u16; 3])>| {
+            let Ok(()) = match (g, depth) {
+                (true, Some((d, z))) => t.gouraud(c).with_depth(z, d).draw(display),
+                (false, Some((d, z))) => t.fill(c[0]).with_depth(z, d).draw(display),
+                (true, None) => t.gouraud(c).draw(display),
+                (false, None) => t.fill(c[0]).draw(display),
+            };
+        };
+        let mut painter = SimDisplay::new(48, 48, Rgb888::BLACK);
+        for (t, c, _, g) in &mesh {
+            draw(&mut painter, t, *c, *g, None);
+        }
+        // A few shuffles of the drawing order.
+        let mut seed = order;
+        for _ in 0..3 {
+            let mut idx: Vec<usize> = (0..mesh.len()).collect();
+            for i in (1..idx.len()).rev() {
+                seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                idx.swap(i, (seed >> 33) as usize % (i + 1));
+            }
+            let mut storage = vec![0u16; 48 * 48];
+            let depth = DepthBuffer::new(&mut storage, 48);
+            depth.clear();
+            let mut display = SimDisplay::new(48, 48, Rgb888::BLACK);
+            for &i in &idx {
+                let (t, c, z, g) = &mesh[i];
+                draw(&mut display, t, *c, *g, Some((depth, *z)));
+            }
+            prop_assert!(display.pixels() == painter.pixels(), "order {:?}", idx);
+        }
+    }
+
+    /// With a cleared depth buffer, Gouraud + depth draws exactly what
+    /// Gouraud alone does, and stores the interpolated depth (within 1).
+    #[test]
+    fn depth_alone_changes_nothing(p in prop::array::uniform6(-(8i64 << 12)..(40 << 12)), c in rgb565(), z in prop::array::uniform3(0u16..u16::MAX)) {
+        let t = Triangle::new(v(p[0], p[1]), v(p[2], p[3]), v(p[4], p[5]));
+        let mut plain = SimDisplay::new(32, 32, Rgb565::BLACK);
+        let Ok(()) = t.gouraud(c).draw(&mut plain);
+        let mut storage = [0u16; 32 * 32];
+        let depth = DepthBuffer::new(&mut storage, 32);
+        depth.clear();
+        let mut tested = SimDisplay::new(32, 32, Rgb565::BLACK);
+        let Ok(()) = t.gouraud(c).with_depth(z, depth).draw(&mut tested);
+        prop_assert!(plain.pixels() == tested.pixels());
+        prop_assert_eq!(plain.counts(), tested.counts());
+        for y in 0..32u32 {
+            for x in 0..32u32 {
+                let d = depth.get(x, y).unwrap();
+                if plain.write_count(Point::new(x as i32, y as i32)) == Some(1) {
+                    let e = exact(&t, z.map(i128::from), i64::from(x), i64::from(y));
+                    prop_assert!(check_value(i128::from(d), e).is_ok(), "{} vs {:?}", d, e);
+                } else {
+                    prop_assert_eq!(d, u16::MAX);
+                }
+            }
+        }
+    }
+}
+
+/// Long spans: huge triangles on a one-row clip as wide as the range, every
+/// pixel checked, so the error of the per-pixel increment accumulates over
+/// up to 2^20 steps.
+#[test]
+fn blend_over_the_longest_spans() {
+    let clip = Rectangle::new(Point::new(-(1 << 19), 0), Size::new(1 << 20, 1));
+    let colors = [
+        [
+            Rgb888::new(0, 255, 7),
+            Rgb888::new(255, 0, 200),
+            Rgb888::new(3, 128, 255),
+        ],
+        [
+            Rgb888::new(0, 0, 0),
+            Rgb888::new(255, 255, 255),
+            Rgb888::new(1, 254, 128),
+        ],
+    ];
+    let mut seed = 0x1234_5678_9abc_def0u64;
+    let mut next = |r: i64| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((seed >> 16) as i64).rem_euclid(2 * r + 1) - r
+    };
+    for case in 0..24 {
+        // Two vertices far left and right, the third above or below row 0.
+        let t = Triangle::new(
+            v(MIN + next(1 << 20).abs(), next(1 << 30)),
+            v(MAX - next(1 << 20).abs(), next(1 << 30)),
+            v(next(MAX), if case % 2 == 0 { MIN + 5 } else { MAX - 5 }),
+        );
+        let spans = shaded(&t, colors[case % 2], &clip);
+        let longest = spans.iter().map(|s| s.0.len()).max().unwrap_or(0);
+        assert_blend(&t, colors[case % 2], &clip).unwrap();
+        assert!(
+            case > 3 || longest > 1 << 18,
+            "{t:?}: longest span {longest}"
+        );
+    }
+}
+
+#[test]
+fn binary_color_is_the_majority_and_blends_at_the_midline() {
+    use BinaryColor::{Off, On};
+    assert_eq!(average_color([On, On, Off]), On);
+    assert_eq!(average_color([On, Off, Off]), Off);
+    let t = Triangle::from_points(Point::new(0, 0), Point::new(10, 0), Point::new(0, 10)).unwrap();
+    let clip = Rectangle::new(Point::zero(), Size::new(16, 16));
+    for (span, pixels) in shaded(&t, [Off, On, Off], &clip) {
+        for (x, c) in (span.x_start..).zip(pixels) {
+            assert_eq!(c.is_on(), x >= 5, "pixel ({x}, {})", span.y);
+        }
+    }
+}
+
+#[test]
+fn gray8_ramp_by_hand() {
+    // 0 at x = 0.5 and 100 at x = 10.5 on every row: 10 per pixel.
+    let f = |x: f32, y: f32| Vertex::try_from_num(x, y).unwrap();
+    let t = Triangle::new(f(0.5, -100.0), f(10.5, 0.0), f(0.5, 100.0));
+    let clip = Rectangle::new(Point::new(0, -3), Size::new(20, 7));
+    for (span, pixels) in shaded(&t, [Gray8::new(0), Gray8::new(100), Gray8::new(0)], &clip) {
+        // The weight of the right vertex is the distance from the left
+        // edge over 10 px: exactly 10 x at pixel x, whatever the row.
+        assert_eq!(span.x_start, 0);
+        for (x, c) in (0..).zip(&pixels) {
+            assert_eq!(i32::from(c.luma()), 10 * x, "({x}, {})", span.y);
+        }
+    }
+}
+
+#[test]
+fn equal_depth_keeps_the_first_and_far_is_never_drawn() {
+    let t = Triangle::from_points(Point::new(0, 0), Point::new(15, 0), Point::new(0, 15)).unwrap();
+    let mut storage = [0u16; 16 * 16];
+    let depth = DepthBuffer::new(&mut storage, 16);
+    depth.clear();
+    let mut display = SimDisplay::new(16, 16, Rgb888::BLACK);
+    let z = [10, 500, 20];
+    let Ok(()) = t.fill(Rgb888::RED).with_depth(z, depth).draw(&mut display);
+    let written = display.pixels_written();
+    assert!(written > 0);
+    // The same depths again: nothing passes, nothing is written.
+    let Ok(()) = t
+        .gouraud([Rgb888::GREEN; 3])
+        .with_depth(z, depth)
+        .draw(&mut display);
+    let Ok(()) = t.fill(Rgb888::BLUE).with_depth(z, depth).draw(&mut display);
+    assert_eq!(display.pixels_written(), written);
+    // One nearer: everything passes.
+    let Ok(()) = t
+        .fill(Rgb888::BLUE)
+        .with_depth(z.map(|z| z - 1), depth)
+        .draw(&mut display);
+    assert_eq!(display.pixels_written(), 2 * written);
+    assert_eq!(display.pixel(Point::new(1, 1)), Some(Rgb888::BLUE));
+    // At FAR on a cleared buffer: nothing.
+    depth.clear();
+    let Ok(()) = t
+        .fill(Rgb888::RED)
+        .with_depth([u16::MAX; 3], depth)
+        .draw(&mut display);
+    assert_eq!(display.pixels_written(), 2 * written);
+}
+
+#[test]
+fn a_run_stops_at_an_equal_depth() {
+    // A (right part) at depth 100, then B over the whole row at depth 100:
+    // B's pixels pass until they reach A's, which stay A's.
+    let f = |x: f32, y: f32| Vertex::try_from_num(x, y).unwrap();
+    let a = Triangle::new(f(8.0, -50.0), f(16.0, -50.0), f(8.0, 50.0));
+    let b = Triangle::new(f(0.0, -50.0), f(32.0, -50.0), f(0.0, 50.0));
+    let mut storage = [0u16; 32];
+    let depth = DepthBuffer::new(&mut storage, 32);
+    depth.clear();
+    let mut display = SimDisplay::new(32, 1, Rgb888::BLACK);
+    let Ok(()) = a
+        .fill(Rgb888::RED)
+        .with_depth([100; 3], depth)
+        .draw(&mut display);
+    let Ok(()) = b
+        .gouraud([Rgb888::BLUE; 3])
+        .with_depth([100; 3], depth)
+        .draw(&mut display);
+    let row: Vec<Rgb888> = (0..32)
+        .map(|x| display.pixel(Point::new(x, 0)).unwrap())
+        .collect();
+    for (x, c) in row.iter().enumerate() {
+        let lit_by_b = (x as f32 + 0.5) < 32.0 - 32.0 * 50.5 / 100.0;
+        let lit_by_a = x >= 8 && (x as f32 + 0.5) < 8.0 + 8.0 * 49.5 / 100.0;
+        let want = if lit_by_a {
+            Rgb888::RED
+        } else if lit_by_b {
+            Rgb888::BLUE
+        } else {
+            Rgb888::BLACK
+        };
+        assert_eq!(*c, want, "pixel {x}: {row:?}");
+    }
+    assert!(row.contains(&Rgb888::RED) && row.contains(&Rgb888::BLUE));
+}

@@ -1,0 +1,274 @@
+//! The triangle variants keep their documented properties: the exact ones
+//! match the exact rasterizer everywhere, the watertight ones have no gap
+//! and no overdraw in meshes and fans at every precision, and every
+//! variant is safe (overflow checks on) at the ends of the range.
+
+#[path = "../examples/tradeoff/measure.rs"]
+mod measure;
+
+use embedded_graphics_core::{
+    geometry::{Point, Size},
+    primitives::Rectangle,
+};
+use embedded_raster::{StepWidth, SubpixelPrecision, Triangle, TriangleAlgorithm, Vertex};
+use measure::{accuracy, largest_ok, scene_sets, Variant};
+
+const EXACT: Variant = Variant::Lib(TriangleAlgorithm::EdgeExact);
+
+#[test]
+fn exact_variants_have_zero_mismatch() {
+    let sets = scene_sets(1);
+    for set in &sets {
+        for a in TriangleAlgorithm::ALL.into_iter().filter(|a| a.is_exact()) {
+            let acc = accuracy(Variant::Lib(a), SubpixelPrecision::Bits12, set);
+            assert_eq!(acc.differing_px, 0, "{a} on {}", set.name);
+        }
+    }
+    // Some set must light something, or the check above is empty.
+    assert!(accuracy(EXACT, SubpixelPrecision::Bits12, &sets[0]).reference_px > 1000);
+}
+
+#[test]
+fn barycentric_matches_the_exact_rasterizer_at_every_precision() {
+    for set in &scene_sets(1) {
+        for p in SubpixelPrecision::ALL {
+            for t in &set.tris {
+                let mut want = vec![];
+                let mut got = vec![];
+                EXACT.spans(p, t, &set.clip, |s| want.push(s));
+                Variant::Lib(TriangleAlgorithm::Barycentric)
+                    .spans(p, t, &set.clip, |s| got.push(s));
+                assert_eq!(got, want, "{t:?} at {p} bits on {}", set.name);
+            }
+        }
+    }
+}
+
+#[test]
+fn watertight_variants_have_no_gap_or_overdraw() {
+    for set in scene_sets(2).iter().filter(|s| s.mesh) {
+        for a in TriangleAlgorithm::ALL {
+            for p in SubpixelPrecision::ALL {
+                let acc = accuracy(Variant::Lib(a), p, set);
+                if a.is_watertight() {
+                    assert_eq!(
+                        (acc.gaps, acc.overdraw),
+                        (0, 0),
+                        "{a} at {p} bits on {}",
+                        set.name
+                    );
+                } else {
+                    // Documented as overdrawing its shared edges.
+                    assert!(acc.overdraw > 0, "{a} at {p} bits on {}", set.name);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn approximate_variants_and_the_seed_differ_measurably() {
+    let sets = scene_sets(1);
+    for v in [
+        Variant::Lib(TriangleAlgorithm::BresenhamWalk),
+        Variant::Seed000,
+    ] {
+        let diff: u64 = sets
+            .iter()
+            .map(|s| accuracy(v, SubpixelPrecision::Bits12, s).differing_px)
+            .sum();
+        assert!(diff > 0, "{}", v.name());
+    }
+    // The exact variants handle every size; the seed's 32-bit integers do not.
+    assert_eq!(largest_ok(EXACT, SubpixelPrecision::Bits12), 524_287);
+    assert!(largest_ok(Variant::Seed000, SubpixelPrecision::Bits12) < 4096);
+}
+
+fn v(x: i64, y: i64) -> Vertex {
+    Vertex::from_raw(x as i32, y as i32)
+}
+
+#[test]
+fn every_variant_is_safe_at_the_ends_of_the_range() {
+    let (lo, hi) = (i64::from(i32::MIN), i64::from(i32::MAX));
+    let coords = [lo, lo + 1, -4096, -1, 0, 1, 2048, 4096, hi - 1, hi];
+    let clips = [
+        Rectangle::new(Point::new(-8, -8), Size::new(16, 16)),
+        Rectangle::new(Point::new(-524_300, -524_300), Size::new(40, 40)),
+        Rectangle::new(Point::new(524_270, 524_270), Size::new(40, 40)),
+        Rectangle::new(Point::new(i32::MIN, i32::MIN), Size::new(u32::MAX, 64)),
+        Rectangle::new(Point::new(i32::MAX - 10, 0), Size::new(u32::MAX, 8)),
+        Rectangle::new(Point::zero(), Size::zero()),
+    ];
+    let mut k = 0usize;
+    let mut next = || {
+        k = k.wrapping_mul(2_654_435_761).wrapping_add(12_345);
+        coords[(k >> 7) % coords.len()]
+    };
+    let mut tris = vec![];
+    for _ in 0..200 {
+        tris.push(Triangle::new(
+            v(next(), next()),
+            v(next(), next()),
+            v(next(), next()),
+        ));
+    }
+    // Degenerate: a point, a segment, a sliver one raw unit wide.
+    tris.push(Triangle::new(v(5, 5), v(5, 5), v(5, 5)));
+    tris.push(Triangle::new(v(lo, lo), v(0, 0), v(hi, hi)));
+    tris.push(Triangle::new(v(lo, lo), v(hi, hi), v(hi, hi - 1)));
+    // Clips as wide and as tall as the whole range, for the first few.
+    let long_clips = [
+        Rectangle::new(Point::new(-600_000, -1), Size::new(1_200_000, 2)),
+        Rectangle::new(Point::new(-1, -600_000), Size::new(2, 1_200_000)),
+    ];
+    let mut cases: Vec<(&Triangle, &Rectangle)> = tris
+        .iter()
+        .flat_map(|t| clips.iter().map(move |c| (t, c)))
+        .collect();
+    cases.extend(
+        tris.iter()
+            .take(12)
+            .flat_map(|t| long_clips.iter().map(move |c| (t, c))),
+    );
+    for (t, clip) in cases {
+        for a in TriangleAlgorithm::ALL {
+            for p in SubpixelPrecision::ALL {
+                let mut n = 0u64;
+                let _ = t.for_each_span_with(a, p, clip, |s| {
+                    let inside = s.x_start < s.x_end
+                        && i64::from(s.x_start) >= i64::from(clip.top_left.x)
+                        && i64::from(s.x_end)
+                            <= i64::from(clip.top_left.x) + i64::from(clip.size.width)
+                        && i64::from(s.y) >= i64::from(clip.top_left.y)
+                        && i64::from(s.y)
+                            < i64::from(clip.top_left.y) + i64::from(clip.size.height);
+                    assert!(inside, "{a} at {p} bits: {s:?} outside {clip:?} for {t:?}");
+                    n += 1;
+                    Ok::<(), ()>(())
+                });
+                assert!(n <= u64::from(clip.size.height));
+            }
+        }
+    }
+}
+
+#[test]
+fn snapping_rounds_to_nearest_ties_to_even_and_stays_in_range() {
+    for p in SubpixelPrecision::ALL {
+        let step = 1i64 << (12 - p.bits());
+        for r in [
+            i64::from(i32::MIN),
+            -step * 3 / 2,
+            -1,
+            0,
+            1,
+            step / 2,
+            step * 3 / 2,
+            i64::from(i32::MAX),
+        ] {
+            let (x, _) = p.snap(v(r, 0)).raw();
+            let x = i64::from(x);
+            assert_eq!(x % step, 0, "{r} at {p} bits");
+            let d = (x - r).abs();
+            let top = x + step > i64::from(i32::MAX);
+            assert!(
+                d * 2 < step || top || (d * 2 == step && (x / step) % 2 == 0),
+                "{r} -> {x} at {p} bits"
+            );
+        }
+    }
+}
+
+/// `max_area_32` is where the barycentric evaluator's 32-bit guarantee ends.
+#[test]
+fn barycentric_steps_in_32_bits_up_to_the_documented_area() {
+    for p in SubpixelPrecision::ALL {
+        let max = p.max_area_32() as i64;
+        // A right triangle whose box is W x H pixels, W H <= max, with W a
+        // power of two: the worst case at the opposite corner.
+        let w = 1i64 << ((63 - max.leading_zeros()) / 2);
+        let h = max / w;
+        assert!(w * h <= max);
+        let clip = Rectangle::new(Point::zero(), Size::new(w as u32, h as u32));
+        let px = 4096;
+        let t = Triangle::new(v(0, 0), v(w * px, 0), v(0, h * px));
+        assert_eq!(
+            t.barycentric_step_width(p, &clip),
+            Some(StepWidth::Bits32),
+            "{p} bits, {w} x {h}"
+        );
+        let big = Triangle::new(v(0, 0), v(4 * w * px, 0), v(0, 4 * h * px));
+        let big_clip = Rectangle::new(Point::zero(), Size::new(4 * w as u32, 4 * h as u32));
+        assert_eq!(
+            big.barycentric_step_width(p, &big_clip),
+            Some(StepWidth::Bits64),
+            "{p} bits"
+        );
+        // Exact in both widths: compare corners of the big one.
+        for (x, y) in [
+            (0, 0),
+            (4 * w - 24, 0),
+            (0, 4 * h - 24),
+            (2 * w - 12, 2 * h - 12),
+        ] {
+            let window = Rectangle::new(Point::new(x as i32, y as i32), Size::new(24, 24));
+            let set = measure::SceneSet {
+                name: "limit",
+                clip: window,
+                tris: vec![big],
+                mesh: false,
+            };
+            let a = accuracy(Variant::Lib(TriangleAlgorithm::Barycentric), p, &set);
+            let e = accuracy(EXACT, p, &set);
+            assert_eq!(a.differing_px, e.differing_px, "{p} bits");
+        }
+    }
+}
+
+mod common;
+
+use proptest::prelude::*;
+
+proptest! {
+    /// The barycentric evaluator against the independent winding-number
+    /// reference of `tests/common`, on the snapped triangle, at every
+    /// scale from a few pixels to the whole range.
+    #[test]
+    fn barycentric_matches_the_independent_reference(
+        scale in 13u32..=32,
+        c in (any::<i32>(), any::<i32>()),
+        d in prop::array::uniform6(any::<i64>()),
+        p in 0usize..4,
+        corner in 0usize..4,
+    ) {
+        let r = 1i64 << scale;
+        let (cx, cy) = if scale == 32 { (0, 0) } else { (i64::from(c.0), i64::from(c.1)) };
+        let at = |k: usize| (d[k].rem_euclid(2 * r + 1) - r + [cx, cy][k % 2])
+            .clamp(i64::from(i32::MIN), i64::from(i32::MAX));
+        let t = Triangle::new(v(at(0), at(1)), v(at(2), at(3)), v(at(4), at(5)));
+        let p = SubpixelPrecision::ALL[p];
+        let snapped = t.snapped(p);
+        // A 24 x 24 window at a corner or the centroid.
+        let (wx, wy) = if corner < 3 {
+            snapped.vertices[corner].raw()
+        } else {
+            let s = snapped.vertices.map(|v| v.raw());
+            (
+                ((i64::from(s[0].0) + i64::from(s[1].0) + i64::from(s[2].0)) / 3) as i32,
+                ((i64::from(s[0].1) + i64::from(s[1].1) + i64::from(s[2].1)) / 3) as i32,
+            )
+        };
+        let (x0, y0) = (i64::from(wx >> 12) - 12, i64::from(wy >> 12) - 12);
+        let want = common::reference_triangle(&snapped, x0, y0, 24, 24);
+        let mut got = common::Grid::new(x0, y0, 24, 24);
+        let clip = got.clip();
+        let _ = t.for_each_span_with(TriangleAlgorithm::Barycentric, p, &clip, |s| {
+            for x in s.x_start..s.x_end {
+                got.bump(i64::from(x), i64::from(s.y));
+            }
+            Ok::<(), ()>(())
+        });
+        prop_assert_eq!(got.diff(&want), vec![]);
+    }
+}
