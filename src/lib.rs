@@ -86,9 +86,15 @@ pub struct ReadmeDoctests;
 pub use error::CoordinateOutOfRange;
 pub use fixed::types::I20F12;
 pub use framebuffer::Framebuffer;
-pub use line::{Line, LineAlgorithm, Polyline, Run, StyledLine, StyledPolyline};
+pub use line::{
+    Line, LineAlgorithm, Polyline, Run, StyledLine, StyledLineVariant, StyledPolyline,
+    StyledPolylineVariant,
+};
 pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError};
 pub use shade::GouraudTriangle;
 pub use span::Span;
-pub use triangle::{FilledTriangle, StepWidth, SubpixelPrecision, Triangle, TriangleAlgorithm};
+pub use triangle::{
+    FilledTriangle, FilledTriangleVariant, StepWidth, SubpixelPrecision, Triangle,
+    TriangleAlgorithm,
+};
 pub use vertex::{ParseCoordinateError, Vertex, SUBPIXEL_BITS};

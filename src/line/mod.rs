@@ -54,7 +54,7 @@ mod polyline;
 mod thick;
 mod variants;
 
-pub use polyline::{Polyline, StyledPolyline};
+pub use polyline::{Polyline, StyledPolyline, StyledPolylineVariant};
 
 use embedded_graphics_core::{
     draw_target::DrawTarget,
@@ -285,7 +285,6 @@ impl Line {
             line: self,
             color,
             width: 1,
-            algorithm: LineAlgorithm::Bresenham,
         }
     }
 
@@ -320,7 +319,7 @@ impl Line {
         clip: &Rectangle,
         mut f: impl FnMut(Run) -> Result<(), E>,
     ) -> Result<(), E> {
-        self.runs(LineAlgorithm::Bresenham, clip, false, &mut f)
+        self.exact_runs(clip, false, &mut f)
     }
 
     /// Like [`for_each_run`](Self::for_each_run), with the pixels chosen by
@@ -359,25 +358,84 @@ impl Line {
         skip_end: bool,
         f: &mut impl FnMut(Run) -> Result<(), E>,
     ) -> Result<(), E> {
-        let c = Canonical::new(self.start, self.end);
         match algorithm {
-            LineAlgorithm::Bresenham => match c.visible(clip, skip_end) {
-                Some(v) => bresenham::runs(&c, &v, f),
-                None => Ok(()),
-            },
-            other => variants::runs(other, &c, clip, skip_end, f),
+            LineAlgorithm::Bresenham => self.exact_runs(clip, skip_end, f),
+            other => variants::runs(
+                other,
+                &Canonical::new(self.start, self.end),
+                clip,
+                skip_end,
+                f,
+            ),
+        }
+    }
+
+    /// The exact (Bresenham) runs, without the pixel at `end` if `skip_end`.
+    fn exact_runs<E>(
+        &self,
+        clip: &Rectangle,
+        skip_end: bool,
+        f: &mut impl FnMut(Run) -> Result<(), E>,
+    ) -> Result<(), E> {
+        let c = Canonical::new(self.start, self.end);
+        match c.visible(clip, skip_end) {
+            Some(v) => bresenham::runs(&c, &v, f),
+            None => Ok(()),
         }
     }
 }
 
-/// A [`Line`] with a colour, a width and an algorithm: a [`Drawable`].
+/// Where the runs of a 1-pixel segment come from. A type rather than a
+/// value, so that code drawing only exact lines links none of the
+/// [`LineAlgorithm`] variants.
+trait RunSource: Copy {
+    fn runs<E>(
+        self,
+        line: &Line,
+        clip: &Rectangle,
+        skip_end: bool,
+        f: &mut impl FnMut(Run) -> Result<(), E>,
+    ) -> Result<(), E>;
+}
+
+/// The exact line.
+#[derive(Debug, Clone, Copy)]
+struct Exact;
+
+impl RunSource for Exact {
+    fn runs<E>(
+        self,
+        line: &Line,
+        clip: &Rectangle,
+        skip_end: bool,
+        f: &mut impl FnMut(Run) -> Result<(), E>,
+    ) -> Result<(), E> {
+        line.exact_runs(clip, skip_end, f)
+    }
+}
+
+impl RunSource for LineAlgorithm {
+    fn runs<E>(
+        self,
+        line: &Line,
+        clip: &Rectangle,
+        skip_end: bool,
+        f: &mut impl FnMut(Run) -> Result<(), E>,
+    ) -> Result<(), E> {
+        line.runs(self, clip, skip_end, f)
+    }
+}
+
+/// A [`Line`] with a colour and a width: a [`Drawable`].
 ///
-/// Width 1 (the default) draws the 1-pixel line chosen by `algorithm`, one
+/// Width 1 (the default) draws the exact 1-pixel line, one
 /// [`fill_solid`](DrawTarget::fill_solid) per [`Run`]. Width 0 draws
 /// nothing. Wider lines are filled rectangles (see the [module
 /// docs](self#thick-lines)) drawn with the triangle rasterizer, one
-/// `fill_solid` per row span; `algorithm` does not apply to them. Widths
-/// above 65535 px draw as 65535 px.
+/// `fill_solid` per row span. Widths above 65535 px draw as 65535 px.
+/// [`algorithm`](Self::algorithm) picks another 1-pixel algorithm as a
+/// [`StyledLineVariant`], a separate type, so that firmware drawing only
+/// exact lines links none of the variants.
 ///
 /// # Examples
 ///
@@ -403,8 +461,6 @@ pub struct StyledLine<C> {
     pub color: C,
     /// The stroke width in pixels.
     pub width: u32,
-    /// How 1-pixel lines choose their pixels.
-    pub algorithm: LineAlgorithm,
 }
 
 impl<C> StyledLine<C> {
@@ -435,13 +491,93 @@ impl<C> StyledLine<C> {
     /// let styled = Line::new(Point::zero(), Point::new(5, 2)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive);
     /// assert_eq!(styled.algorithm, LineAlgorithm::Naive);
     /// ```
+    pub fn algorithm(self, algorithm: LineAlgorithm) -> StyledLineVariant<C> {
+        StyledLineVariant {
+            line: self.line,
+            color: self.color,
+            width: self.width,
+            algorithm,
+        }
+    }
+}
+
+impl<C: PixelColor> Drawable for StyledLine<C> {
+    type Color = C;
+    type Output = ();
+
+    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        draw_segment(self.line, self.width, Exact, false, self.color, target)
+    }
+}
+
+/// A [`StyledLine`] whose 1-pixel pixels come from a chosen
+/// [`LineAlgorithm`], made by [`StyledLine::algorithm`]: a [`Drawable`].
+/// Thick lines are the same rectangles whatever the algorithm.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Line, LineAlgorithm};
+///
+/// let mut fb = Framebuffer::<BinaryMsb, 16, 16, { buffer_size::<BinaryMsb>(16, 16) }>::new();
+/// Line::new(Point::new(0, 0), Point::new(15, 6))
+///     .stroke(BinaryColor::On)
+///     .algorithm(LineAlgorithm::Dda)
+///     .draw(&mut fb)?;
+/// assert_eq!(fb.pixel(Point::new(15, 6)), Some(BinaryColor::On));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct StyledLineVariant<C> {
+    /// The geometry.
+    pub line: Line,
+    /// The stroke colour.
+    pub color: C,
+    /// The stroke width in pixels.
+    pub width: u32,
+    /// How 1-pixel lines choose their pixels.
+    pub algorithm: LineAlgorithm,
+}
+
+impl<C> StyledLineVariant<C> {
+    /// Sets the stroke width in pixels.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::{Line, LineAlgorithm};
+    ///
+    /// let s = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive).stroke_width(3);
+    /// assert_eq!(s.width, 3);
+    /// ```
+    pub const fn stroke_width(mut self, width: u32) -> Self {
+        self.width = width;
+        self
+    }
+
+    /// Sets the algorithm of 1-pixel lines.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::{Line, LineAlgorithm};
+    ///
+    /// let s = Line::new(Point::zero(), Point::new(5, 2)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive).algorithm(LineAlgorithm::Dda);
+    /// assert_eq!(s.algorithm, LineAlgorithm::Dda);
+    /// ```
     pub const fn algorithm(mut self, algorithm: LineAlgorithm) -> Self {
         self.algorithm = algorithm;
         self
     }
 }
 
-impl<C: PixelColor> Drawable for StyledLine<C> {
+impl<C: PixelColor> Drawable for StyledLineVariant<C> {
     type Color = C;
     type Output = ();
 
@@ -464,7 +600,7 @@ impl<C: PixelColor> Drawable for StyledLine<C> {
 fn draw_segment<C: PixelColor, D: DrawTarget<Color = C>>(
     line: Line,
     width: u32,
-    algorithm: LineAlgorithm,
+    source: impl RunSource,
     skip_end: bool,
     color: C,
     target: &mut D,
@@ -472,7 +608,7 @@ fn draw_segment<C: PixelColor, D: DrawTarget<Color = C>>(
     let clip = target.bounding_box();
     match width {
         0 => Ok(()),
-        1 => line.runs(algorithm, &clip, skip_end, &mut |r: Run| {
+        1 => source.runs(&line, &clip, skip_end, &mut |r: Run| {
             target.fill_solid(&r.rect(), color)
         }),
         w => match thick::triangles(line.start, line.end, w, &clip) {

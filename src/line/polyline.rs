@@ -5,7 +5,7 @@ use embedded_graphics_core::{
     Drawable,
 };
 
-use super::{draw_segment, Line, LineAlgorithm, Run};
+use super::{draw_segment, Exact, Line, LineAlgorithm, Run, RunSource};
 
 /// Connected lines through `points`, in order, each joint pixel lit once.
 ///
@@ -73,7 +73,6 @@ impl<'a> Polyline<'a> {
             polyline: self,
             color,
             width: 1,
-            algorithm: LineAlgorithm::Bresenham,
         }
     }
 
@@ -128,7 +127,8 @@ impl<'a> Polyline<'a> {
     }
 }
 
-/// A [`Polyline`] with a colour, a width and an algorithm: a [`Drawable`].
+/// A [`Polyline`] with a colour and a width: a [`Drawable`] of exact
+/// segments ([`algorithm`](Self::algorithm) gives a [`StyledPolylineVariant`]).
 /// Width 0 draws nothing; see [`Polyline`] for the other widths.
 ///
 /// # Examples
@@ -151,11 +151,9 @@ pub struct StyledPolyline<'a, C> {
     pub color: C,
     /// The stroke width in pixels.
     pub width: u32,
-    /// How 1-pixel segments choose their pixels.
-    pub algorithm: LineAlgorithm,
 }
 
-impl<C> StyledPolyline<'_, C> {
+impl<'a, C> StyledPolyline<'a, C> {
     /// Sets the stroke width in pixels.
     ///
     /// # Examples
@@ -185,9 +183,13 @@ impl<C> StyledPolyline<'_, C> {
     /// let p = Polyline::new(&points).stroke(BinaryColor::On).algorithm(LineAlgorithm::Dda);
     /// assert_eq!(p.algorithm, LineAlgorithm::Dda);
     /// ```
-    pub const fn algorithm(mut self, algorithm: LineAlgorithm) -> Self {
-        self.algorithm = algorithm;
-        self
+    pub fn algorithm(self, algorithm: LineAlgorithm) -> StyledPolylineVariant<'a, C> {
+        StyledPolylineVariant {
+            polyline: self.polyline,
+            color: self.color,
+            width: self.width,
+            algorithm,
+        }
     }
 }
 
@@ -199,19 +201,104 @@ impl<C: PixelColor> Drawable for StyledPolyline<'_, C> {
     where
         D: DrawTarget<Color = C>,
     {
-        let (width, algorithm, color) = (self.width, self.algorithm, self.color);
-        self.polyline.segments().try_for_each(|(line, skip_end)| {
-            // Thick segments are whole rectangles: no pixel to leave out.
-            draw_segment(
-                line,
-                width,
-                algorithm,
-                skip_end && width == 1,
-                color,
-                target,
-            )
-        })
+        draw_polyline(&self.polyline, self.width, Exact, self.color, target)
     }
+}
+
+/// A [`StyledPolyline`] whose 1-pixel segments come from a chosen
+/// [`LineAlgorithm`], made by [`StyledPolyline::algorithm`]: a
+/// [`Drawable`].
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, LineAlgorithm, Polyline};
+///
+/// let mut fb = Framebuffer::<BinaryMsb, 16, 16, { buffer_size::<BinaryMsb>(16, 16) }>::new();
+/// let points = [Point::new(0, 0), Point::new(15, 6), Point::new(3, 15)];
+/// Polyline::new(&points).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive).draw(&mut fb)?;
+/// assert_eq!(fb.pixel(Point::new(3, 15)), Some(BinaryColor::On));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct StyledPolylineVariant<'a, C> {
+    /// The geometry.
+    pub polyline: Polyline<'a>,
+    /// The stroke colour.
+    pub color: C,
+    /// The stroke width in pixels.
+    pub width: u32,
+    /// How 1-pixel segments choose their pixels.
+    pub algorithm: LineAlgorithm,
+}
+
+impl<C> StyledPolylineVariant<'_, C> {
+    /// Sets the stroke width in pixels.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::{LineAlgorithm, Polyline};
+    ///
+    /// let points = [Point::zero(), Point::new(3, 1)];
+    /// let p = Polyline::new(&points).stroke(BinaryColor::On).algorithm(LineAlgorithm::Dda).stroke_width(2);
+    /// assert_eq!(p.width, 2);
+    /// ```
+    pub const fn stroke_width(mut self, width: u32) -> Self {
+        self.width = width;
+        self
+    }
+
+    /// Sets the algorithm of 1-pixel segments.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::{LineAlgorithm, Polyline};
+    ///
+    /// let points = [Point::zero(), Point::new(3, 1)];
+    /// let p = Polyline::new(&points).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive).algorithm(LineAlgorithm::Dda);
+    /// assert_eq!(p.algorithm, LineAlgorithm::Dda);
+    /// ```
+    pub const fn algorithm(mut self, algorithm: LineAlgorithm) -> Self {
+        self.algorithm = algorithm;
+        self
+    }
+}
+
+impl<C: PixelColor> Drawable for StyledPolylineVariant<'_, C> {
+    type Color = C;
+    type Output = ();
+
+    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        draw_polyline(
+            &self.polyline,
+            self.width,
+            self.algorithm,
+            self.color,
+            target,
+        )
+    }
+}
+
+/// Draws every segment, each joint pixel once.
+fn draw_polyline<C: PixelColor, D: DrawTarget<Color = C>>(
+    polyline: &Polyline<'_>,
+    width: u32,
+    source: impl RunSource,
+    color: C,
+    target: &mut D,
+) -> Result<(), D::Error> {
+    polyline.segments().try_for_each(|(line, skip_end)| {
+        // Thick segments are whole rectangles: no pixel to leave out.
+        draw_segment(line, width, source, skip_end && width == 1, color, target)
+    })
 }
 
 #[cfg(feature = "defmt")]

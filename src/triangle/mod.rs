@@ -104,8 +104,6 @@ impl Triangle {
         FilledTriangle {
             triangle: self,
             color,
-            algorithm: TriangleAlgorithm::EdgeExact,
-            precision: SubpixelPrecision::Bits12,
         }
     }
 
@@ -246,11 +244,13 @@ impl Triangle {
 }
 
 /// A [`Triangle`] filled with one colour: a [`Drawable`] for any
-/// [`DrawTarget`]. Each row's span goes to the target as one
-/// [`fill_solid`](DrawTarget::fill_solid) call, clipped to the target's
-/// bounding box first. The spans come from [`algorithm`](Self::algorithm)
-/// at [`precision`](Self::precision) (by default the exact rasterizer at
-/// 12 bits).
+/// [`DrawTarget`]. Each row's span from the exact rasterizer goes to the
+/// target as one [`fill_solid`](DrawTarget::fill_solid) call, clipped to the
+/// target's bounding box first.
+///
+/// [`algorithm`](Self::algorithm) and [`precision`](Self::precision) turn it
+/// into a [`FilledTriangleVariant`]: the choice is a type, so firmware that
+/// never asks for a variant links none of them.
 ///
 /// # Examples
 ///
@@ -278,14 +278,11 @@ pub struct FilledTriangle<C> {
     pub triangle: Triangle,
     /// The fill colour.
     pub color: C,
-    /// The rasterization algorithm.
-    pub algorithm: TriangleAlgorithm,
-    /// The subpixel precision vertices are snapped to.
-    pub precision: SubpixelPrecision,
 }
 
 impl<C> FilledTriangle<C> {
-    /// Draws with `algorithm` instead of the exact default.
+    /// Draws with `algorithm` (at full precision) instead of the exact
+    /// default.
     ///
     /// # Examples
     ///
@@ -296,12 +293,17 @@ impl<C> FilledTriangle<C> {
     /// let t = Triangle::default().fill(BinaryColor::On).algorithm(TriangleAlgorithm::EdgeWalk);
     /// assert_eq!(t.algorithm, TriangleAlgorithm::EdgeWalk);
     /// ```
-    pub const fn algorithm(mut self, algorithm: TriangleAlgorithm) -> Self {
-        self.algorithm = algorithm;
-        self
+    pub fn algorithm(self, algorithm: TriangleAlgorithm) -> FilledTriangleVariant<C> {
+        FilledTriangleVariant {
+            triangle: self.triangle,
+            color: self.color,
+            algorithm,
+            precision: SubpixelPrecision::Bits12,
+        }
     }
 
-    /// Snaps the vertices to `precision` before drawing.
+    /// Snaps the vertices to `precision` before drawing (with the exact
+    /// algorithm).
     ///
     /// # Examples
     ///
@@ -312,13 +314,107 @@ impl<C> FilledTriangle<C> {
     /// let t = Triangle::default().fill(BinaryColor::On).precision(SubpixelPrecision::Bits4);
     /// assert_eq!(t.precision.bits(), 4);
     /// ```
+    pub fn precision(self, precision: SubpixelPrecision) -> FilledTriangleVariant<C> {
+        FilledTriangleVariant {
+            triangle: self.triangle,
+            color: self.color,
+            algorithm: TriangleAlgorithm::EdgeExact,
+            precision,
+        }
+    }
+}
+
+impl<C: PixelColor> Drawable for FilledTriangle<C> {
+    type Color = C;
+    type Output = ();
+
+    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        let clip = target.bounding_box();
+        self.triangle
+            .for_each_span(&clip, |span| target.fill_solid(&span.rect(), self.color))
+    }
+}
+
+/// A filled triangle drawn with a chosen [`TriangleAlgorithm`] at a chosen
+/// [`SubpixelPrecision`], made by [`FilledTriangle::algorithm`] or
+/// [`FilledTriangle::precision`]. Spans go to the target as
+/// [`fill_solid`](DrawTarget::fill_solid) calls, as for [`FilledTriangle`].
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_raster::{
+///     framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, SubpixelPrecision, Triangle,
+///     TriangleAlgorithm,
+/// };
+///
+/// let mut fb = Framebuffer::<Gray8Bytes, 16, 16, { buffer_size::<Gray8Bytes>(16, 16) }>::new();
+/// let t = Triangle::from_points(Point::new(1, 1), Point::new(14, 3), Point::new(5, 12)).unwrap();
+/// t.fill(Gray8::WHITE)
+///     .algorithm(TriangleAlgorithm::EdgeWalk)
+///     .precision(SubpixelPrecision::Bits8)
+///     .draw(&mut fb)
+///     .unwrap();
+/// assert_eq!(fb.pixel(Point::new(6, 5)), Some(Gray8::WHITE));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct FilledTriangleVariant<C> {
+    /// The shape.
+    pub triangle: Triangle,
+    /// The fill colour.
+    pub color: C,
+    /// The rasterization algorithm.
+    pub algorithm: TriangleAlgorithm,
+    /// The subpixel precision vertices are snapped to.
+    pub precision: SubpixelPrecision,
+}
+
+impl<C> FilledTriangleVariant<C> {
+    /// The same, drawn with `algorithm`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_raster::{SubpixelPrecision, Triangle, TriangleAlgorithm};
+    ///
+    /// let t = Triangle::default()
+    ///     .fill(BinaryColor::On)
+    ///     .precision(SubpixelPrecision::Bits4)
+    ///     .algorithm(TriangleAlgorithm::Barycentric);
+    /// assert_eq!((t.algorithm, t.precision.bits()), (TriangleAlgorithm::Barycentric, 4));
+    /// ```
+    pub const fn algorithm(mut self, algorithm: TriangleAlgorithm) -> Self {
+        self.algorithm = algorithm;
+        self
+    }
+
+    /// The same, with vertices snapped to `precision`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_raster::{SubpixelPrecision, Triangle, TriangleAlgorithm};
+    ///
+    /// let t = Triangle::default()
+    ///     .fill(BinaryColor::On)
+    ///     .algorithm(TriangleAlgorithm::EdgeWalk)
+    ///     .precision(SubpixelPrecision::Bits0);
+    /// assert_eq!(t.precision.bits(), 0);
+    /// ```
     pub const fn precision(mut self, precision: SubpixelPrecision) -> Self {
         self.precision = precision;
         self
     }
 }
 
-impl<C: PixelColor> Drawable for FilledTriangle<C> {
+impl<C: PixelColor> Drawable for FilledTriangleVariant<C> {
     type Color = C;
     type Output = ();
 
