@@ -17,6 +17,10 @@
 #[path = "common/builtin_scene.rs"]
 mod builtin_scene;
 
+#[cfg(target_arch = "arm")]
+#[path = "common/semihosting.rs"]
+mod semihosting;
+
 /// The line both sides print; CI compares the firmware's with the host's.
 #[cfg_attr(not(target_arch = "arm"), allow(dead_code))]
 const REPORT: &str = "scene 320x240 rgb565le fnv1a32=";
@@ -38,7 +42,7 @@ fn check_step_widths() {
 #[cfg(target_arch = "arm")]
 mod target {
     use cortex_m_rt::entry;
-    use cortex_m_semihosting::{debug, hprintln};
+    use cortex_m_semihosting::hprintln;
 
     use super::builtin_scene::{self, SceneBuffer};
 
@@ -49,19 +53,7 @@ mod target {
         super::check_step_widths();
         let checksum = builtin_scene::render(FB);
         hprintln!("{}0x{:08x}", super::REPORT, checksum);
-        debug::exit(debug::EXIT_SUCCESS);
-        loop {
-            cortex_m::asm::nop();
-        }
-    }
-
-    #[panic_handler]
-    fn panic(info: &core::panic::PanicInfo) -> ! {
-        hprintln!("firmware panicked: {}", info);
-        debug::exit(debug::EXIT_FAILURE);
-        loop {
-            cortex_m::asm::nop();
-        }
+        super::semihosting::exit_success()
     }
 }
 

@@ -27,12 +27,16 @@
 mod builtin_scene;
 
 #[cfg(target_arch = "arm")]
+#[path = "common/semihosting.rs"]
+mod semihosting;
+
+#[cfg(target_arch = "arm")]
 mod target {
     use core::hint::black_box;
 
     use cortex_m::peripheral::{syst::SystClkSource, SYST};
     use cortex_m_rt::entry;
-    use cortex_m_semihosting::{debug, hprintln};
+    use cortex_m_semihosting::hprintln;
     use embedded_graphics_core::{
         draw_target::DrawTarget,
         geometry::{Dimensions, OriginDimensions, Point, Size},
@@ -456,19 +460,7 @@ mod target {
         row(&mut counter, FB, RECTS, "polygons", label, batch, false);
 
         hprintln!("done");
-        debug::exit(debug::EXIT_SUCCESS);
-        loop {
-            cortex_m::asm::nop();
-        }
-    }
-
-    #[panic_handler]
-    fn panic(info: &core::panic::PanicInfo) -> ! {
-        hprintln!("icount panicked: {}", info);
-        debug::exit(debug::EXIT_FAILURE);
-        loop {
-            cortex_m::asm::nop();
-        }
+        super::semihosting::exit_success()
     }
 }
 

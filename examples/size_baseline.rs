@@ -8,6 +8,10 @@
 #[path = "common/builtin_scene.rs"]
 mod builtin_scene;
 
+#[cfg(target_arch = "arm")]
+#[path = "common/semihosting.rs"]
+mod semihosting;
+
 /// Checksums the untouched (black) framebuffer.
 fn draw(fb: &mut builtin_scene::SceneBuffer) -> u32 {
     builtin_scene::fnv1a32(core::hint::black_box(fb).as_bytes())
@@ -16,7 +20,7 @@ fn draw(fb: &mut builtin_scene::SceneBuffer) -> u32 {
 #[cfg(target_arch = "arm")]
 mod target {
     use cortex_m_rt::entry;
-    use cortex_m_semihosting::{debug, hprintln};
+    use cortex_m_semihosting::hprintln;
 
     use super::builtin_scene::SceneBuffer;
 
@@ -24,19 +28,7 @@ mod target {
     fn main() -> ! {
         static mut FB: SceneBuffer = SceneBuffer::new();
         hprintln!("baseline fnv1a32=0x{:08x}", super::draw(FB));
-        debug::exit(debug::EXIT_SUCCESS);
-        loop {
-            cortex_m::asm::nop();
-        }
-    }
-
-    #[panic_handler]
-    fn panic(info: &core::panic::PanicInfo) -> ! {
-        hprintln!("panicked: {}", info);
-        debug::exit(debug::EXIT_FAILURE);
-        loop {
-            cortex_m::asm::nop();
-        }
+        super::semihosting::exit_success()
     }
 }
 

@@ -10,6 +10,10 @@
 #[path = "common/builtin_scene.rs"]
 mod builtin_scene;
 
+#[cfg(target_arch = "arm")]
+#[path = "common/semihosting.rs"]
+mod semihosting;
+
 use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
 use embedded_raster::shade::DepthBuffer;
 
@@ -38,7 +42,7 @@ fn draw(fb: &mut builtin_scene::SceneBuffer, storage: &mut [u16]) -> u32 {
 #[cfg(target_arch = "arm")]
 mod target {
     use cortex_m_rt::entry;
-    use cortex_m_semihosting::{debug, hprintln};
+    use cortex_m_semihosting::hprintln;
 
     use super::builtin_scene::{SceneBuffer, HEIGHT, WIDTH};
 
@@ -47,19 +51,7 @@ mod target {
         static mut FB: SceneBuffer = SceneBuffer::new();
         static mut DEPTH: [u16; WIDTH * HEIGHT] = [0; WIDTH * HEIGHT];
         hprintln!("shading fnv1a32=0x{:08x}", super::draw(FB, DEPTH));
-        debug::exit(debug::EXIT_SUCCESS);
-        loop {
-            cortex_m::asm::nop();
-        }
-    }
-
-    #[panic_handler]
-    fn panic(info: &core::panic::PanicInfo) -> ! {
-        hprintln!("panicked: {}", info);
-        debug::exit(debug::EXIT_FAILURE);
-        loop {
-            cortex_m::asm::nop();
-        }
+        super::semihosting::exit_success()
     }
 }
 

@@ -9,6 +9,10 @@
 #[path = "common/builtin_scene.rs"]
 mod builtin_scene;
 
+#[cfg(target_arch = "arm")]
+#[path = "common/semihosting.rs"]
+mod semihosting;
+
 use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
 
 /// Draws the triangles; returns the checksum.
@@ -27,7 +31,7 @@ fn draw(fb: &mut builtin_scene::SceneBuffer) -> u32 {
 #[cfg(target_arch = "arm")]
 mod target {
     use cortex_m_rt::entry;
-    use cortex_m_semihosting::{debug, hprintln};
+    use cortex_m_semihosting::hprintln;
 
     use super::builtin_scene::SceneBuffer;
 
@@ -35,19 +39,7 @@ mod target {
     fn main() -> ! {
         static mut FB: SceneBuffer = SceneBuffer::new();
         hprintln!("triangles fnv1a32=0x{:08x}", super::draw(FB));
-        debug::exit(debug::EXIT_SUCCESS);
-        loop {
-            cortex_m::asm::nop();
-        }
-    }
-
-    #[panic_handler]
-    fn panic(info: &core::panic::PanicInfo) -> ! {
-        hprintln!("panicked: {}", info);
-        debug::exit(debug::EXIT_FAILURE);
-        loop {
-            cortex_m::asm::nop();
-        }
+        super::semihosting::exit_success()
     }
 }
 
