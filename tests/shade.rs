@@ -22,12 +22,9 @@ use embedded_raster::{
 };
 use proptest::prelude::*;
 
-const MIN: i64 = i32::MIN as i64;
-const MAX: i64 = i32::MAX as i64;
+mod common;
 
-fn v(x: i64, y: i64) -> Vertex {
-    Vertex::from_raw(x.clamp(MIN, MAX) as i32, y.clamp(MIN, MAX) as i32)
-}
+use common::shapes::{any_scale, focus, v, MAX, MIN};
 
 fn raw(t: &Triangle) -> [(i128, i128); 3] {
     t.vertices.map(|v| {
@@ -126,22 +123,6 @@ fn window(cx: i64, cy: i64, w: u32, h: u32) -> Rectangle {
     Rectangle::new(Point::new(x, y), Size::new(w, h))
 }
 
-/// Half-extents in raw units, from a 4 px triangle to the whole range.
-const SCALES: [i64; 6] = [1 << 13, 1 << 15, 1 << 18, 1 << 22, 1 << 27, 1 << 32];
-
-prop_compose! {
-    fn any_scale()(
-        scale in 0..SCALES.len(),
-        c in (any::<i32>(), any::<i32>()),
-        d in prop::array::uniform6(any::<i64>()),
-    ) -> Triangle {
-        let r = SCALES[scale];
-        let (cx, cy) = if scale == SCALES.len() - 1 { (0, 0) } else { (i64::from(c.0), i64::from(c.1)) };
-        let off = |k: usize| d[k].rem_euclid(2 * r + 1) - r;
-        Triangle::new(v(cx + off(0), cy + off(1)), v(cx + off(2), cy + off(3)), v(cx + off(4), cy + off(5)))
-    }
-}
-
 prop_compose! {
     /// The third vertex close to the line through the first two.
     fn sliver()(
@@ -172,27 +153,6 @@ fn gray8() -> impl Strategy<Value = [Gray8; 3]> {
     prop::array::uniform3(any::<u8>().prop_map(Gray8::new))
 }
 
-/// A window at a vertex or somewhere in the bounding box.
-fn focus(t: &Triangle, which: usize, f: (u16, u16)) -> (i64, i64) {
-    let r = raw(t).map(|(x, y)| (x as i64, y as i64));
-    if which < 3 {
-        return r[which];
-    }
-    let lerp = |a: i64, b: i64| a + ((b - a) as i128 * i128::from(f.0) / 65535) as i64;
-    let (x0, x1) = (
-        r.iter().map(|p| p.0).min().unwrap(),
-        r.iter().map(|p| p.0).max().unwrap(),
-    );
-    let (y0, y1) = (
-        r.iter().map(|p| p.1).min().unwrap(),
-        r.iter().map(|p| p.1).max().unwrap(),
-    );
-    (
-        lerp(x0, x1),
-        y0 + ((y1 - y0) as i128 * i128::from(f.1) / 65535) as i64,
-    )
-}
-
 proptest! {
     /// The average against an independent formula: the channel sum over
     /// three, rounded to nearest in floating point.
@@ -213,25 +173,25 @@ proptest! {
 
     #[test]
     fn rgb888_blend_at_every_scale(t in any_scale(), c in rgb888(), which in 0usize..4, f in any::<(u16, u16)>(), w in 1u32..48, h in 1u32..48) {
-        let (cx, cy) = focus(&t, which, f);
+        let (cx, cy) = focus(&t, which, f.0, f.1);
         assert_blend(&t, c, &window(cx, cy, w, h))?;
     }
 
     #[test]
     fn rgb565_blend_at_every_scale(t in any_scale(), c in rgb565(), which in 0usize..4, f in any::<(u16, u16)>()) {
-        let (cx, cy) = focus(&t, which, f);
+        let (cx, cy) = focus(&t, which, f.0, f.1);
         assert_blend(&t, c, &window(cx, cy, 40, 40))?;
     }
 
     #[test]
     fn gray8_blend_at_every_scale(t in any_scale(), c in gray8(), which in 0usize..4, f in any::<(u16, u16)>()) {
-        let (cx, cy) = focus(&t, which, f);
+        let (cx, cy) = focus(&t, which, f.0, f.1);
         assert_blend(&t, c, &window(cx, cy, 40, 40))?;
     }
 
     #[test]
     fn blend_for_slivers(t in sliver(), c in rgb888(), which in 0usize..4, f in any::<(u16, u16)>()) {
-        let (cx, cy) = focus(&t, which, f);
+        let (cx, cy) = focus(&t, which, f.0, f.1);
         assert_blend(&t, c, &window(cx, cy, 40, 40))?;
     }
 
@@ -280,7 +240,7 @@ proptest! {
     /// and colours as `for_each_span`, nothing else written.
     #[test]
     fn draws_one_fill_contiguous_per_span(t in any_scale(), c in rgb888(), f in any::<(u16, u16)>()) {
-        let (cx, cy) = focus(&t, 3, f);
+        let (cx, cy) = focus(&t, 3, f.0, f.1);
         let clip = window(cx, cy, 32, 24);
         let spans = shaded(&t, c, &clip);
         let mut display = SimDisplay::new(32, 24, Rgb888::BLACK);

@@ -8,6 +8,8 @@
 
 #![allow(dead_code)]
 
+pub mod shapes;
+
 use embedded_graphics_core::{
     geometry::{Point, Size},
     primitives::Rectangle,
