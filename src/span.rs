@@ -56,6 +56,20 @@ impl Span {
         self.x_end <= self.x_start
     }
 
+    /// The span `x_start..x_end` on row `y`, from the wide integers a
+    /// rasterizer clips in: `None` if it is empty or does not fit `i32`
+    /// (which a span inside a clip rectangle always does).
+    pub(crate) fn from_wide(y: i64, x_start: i64, x_end: i64) -> Option<Self> {
+        if x_start >= x_end {
+            return None;
+        }
+        Some(Self {
+            y: i32::try_from(y).ok()?,
+            x_start: i32::try_from(x_start).ok()?,
+            x_end: i32::try_from(x_end).ok()?,
+        })
+    }
+
     /// The span as a one-row rectangle, ready for `DrawTarget::fill_solid`.
     ///
     /// # Examples

@@ -244,17 +244,9 @@ fn emit_row<E>(
             (false, true) => run_start = Some(x),
             (true, false) => {
                 let start = run_start.take().unwrap_or(x);
-                let (x0, x1) = (start.max(clip.x0), x.min(clip.x1));
-                // Both lie between the clip's left edge and a threshold of
-                // the vertex range, so they fit in i32.
-                if let (true, Ok(x_start), Ok(x_end)) =
-                    (x0 < x1, i32::try_from(x0), i32::try_from(x1))
-                {
-                    emit(Span {
-                        y: row,
-                        x_start,
-                        x_end,
-                    })?;
+                let span = Span::from_wide(i64::from(row), start.max(clip.x0), x.min(clip.x1));
+                if let Some(span) = span {
+                    emit(span)?;
                 }
             }
             _ => {}

@@ -97,14 +97,8 @@ pub(super) fn rasterize<E>(
             }
         }
         let (i0, i1) = (lo.max(c.x0), (hi + 1).min(c.x1));
-        if i0 < i1 {
-            // Inside the clip rectangle, so every value fits in i32.
-            let (Ok(y), Ok(x_start), Ok(x_end)) =
-                (i32::try_from(j), i32::try_from(i0), i32::try_from(i1))
-            else {
-                continue;
-            };
-            emit(Span { y, x_start, x_end })?;
+        if let Some(span) = Span::from_wide(j, i0, i1) {
+            emit(span)?;
         }
     }
     Ok(())

@@ -113,14 +113,8 @@ pub(super) fn rasterize<E>(
             // Pixels whose centre i + 1/2 lies in [xl, xr).
             let i0 = ((xl - half_px + one - 1) >> FRAC).max(c.x0);
             let i1 = ((xr - half_px + one - 1) >> FRAC).min(c.x1);
-            if i0 < i1 {
-                // Inside the clip rectangle, so every value fits in i32.
-                let (Ok(y), Ok(x_start), Ok(x_end)) =
-                    (i32::try_from(j), i32::try_from(i0), i32::try_from(i1))
-                else {
-                    continue;
-                };
-                emit(Span { y, x_start, x_end })?;
+            if let Some(span) = Span::from_wide(j, i0, i1) {
+                emit(span)?;
             }
         }
     }
