@@ -37,11 +37,10 @@
 //! `[-524288, 524288 - 1/4096]`. Every [`Vertex`] is in range; conversions
 //! from numbers, strings and [`Point`]s are checked and report
 //! [`CoordinateOutOfRange`]. Any triangle of in-range vertices is
-//! rasterized exactly, on any clip rectangle. Per triangle, the edge
-//! functions step in 32 bits when the values over the visible part fit
-//! (always when the bounding box has both sides under 524288 px and covers
-//! at most 524287 px², e.g. 724 x 724) and in 64 bits otherwise; see
-//! [`StepWidth`].
+//! rasterized exactly, on any clip rectangle. Per triangle, the edges
+//! step in 32 bits when the triangle's bounding box is under 131,070 px a
+//! side and in 64 bits otherwise; their setup divides in 32 bits when the
+//! operands fit and in 64 or 128 bits only when they do not.
 //!
 //! # No panics
 //!
@@ -71,6 +70,7 @@ pub mod framebuffer;
 pub mod line;
 pub mod mesh;
 mod polygon;
+mod raster;
 pub mod shade;
 #[cfg(feature = "sim")]
 pub mod sim;
@@ -92,9 +92,9 @@ pub use line::{
 };
 pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError};
 pub use shade::GouraudTriangle;
+pub use raster::sink::{DrawTargetSink, SpanDrawable, SpanSink};
 pub use span::Span;
 pub use triangle::{
-    FilledTriangle, FilledTriangleVariant, StepWidth, SubpixelPrecision, Triangle,
-    TriangleAlgorithm,
+    FilledTriangle, FilledTriangleVariant, SubpixelPrecision, Triangle, TriangleAlgorithm,
 };
 pub use vertex::{ParseCoordinateError, Vertex, SUBPIXEL_BITS};

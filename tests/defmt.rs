@@ -7,7 +7,7 @@
 use embedded_graphics_core::pixelcolor::{BinaryColor, Rgb565};
 use embedded_raster::{
     framebuffer::{buffer_size, BinaryMsb, Gray8Bytes, Rgb565Be, Rgb565Le, Rgb888Bytes},
-    CoordinateOutOfRange, FilledTriangle, Framebuffer, ParseCoordinateError, Span, StepWidth,
+    CoordinateOutOfRange, FilledTriangle, Framebuffer, ParseCoordinateError, Span,
     Triangle, Vertex,
 };
 
@@ -20,7 +20,6 @@ fn value_types_implement_format() {
     implements_format::<FilledTriangle<Rgb565>>();
     implements_format::<FilledTriangle<BinaryColor>>();
     implements_format::<Span>();
-    implements_format::<StepWidth>();
     implements_format::<CoordinateOutOfRange>();
     implements_format::<ParseCoordinateError>();
     implements_format::<Rgb565Le>();

@@ -12,18 +12,11 @@ mod builtin_scene;
 
 use builtin_scene::{SceneBuffer, HUGE, SCREEN, TWIN};
 use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
-use embedded_raster::StepWidth;
 
 fn host_render() -> (Box<SceneBuffer>, u32) {
     let mut fb = Box::new(SceneBuffer::new());
     let checksum = builtin_scene::render(&mut fb);
     (fb, checksum)
-}
-
-#[test]
-fn scene_takes_both_edge_paths() {
-    assert_eq!(HUGE.step_width(&SCREEN), Some(StepWidth::Bits64));
-    assert_eq!(TWIN.step_width(&SCREEN), Some(StepWidth::Bits32));
 }
 
 #[test]

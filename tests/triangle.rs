@@ -13,7 +13,7 @@ use embedded_graphics_core::{
     prelude::*,
     primitives::Rectangle,
 };
-use embedded_raster::{StepWidth, Triangle, Vertex};
+use embedded_raster::{Triangle, Vertex};
 use proptest::prelude::*;
 
 /// Pixel containing the raw point `p` (floor division by 4096).
@@ -109,37 +109,6 @@ proptest! {
         let g2 = common::rasterized(&Triangle::new(a, c, b), -14, -14, 28, 28);
         prop_assert_eq!(g1, g2);
     }
-
-    /// The 32-bit bound in the docs: bounding box sides under 524288 px and
-    /// at most 524287 px^2 always step in 32 bits, whatever the clip.
-    #[test]
-    fn small_boxes_step_in_32_bits(
-        c in (any::<i32>(), any::<i32>()),
-        wh in (1i64..(1 << 31), 1i64..(1 << 31)),
-        d in prop::array::uniform4(any::<u32>()),
-        corner in prop::array::uniform2(any::<bool>()),
-        clip in (any::<i32>(), any::<i32>(), any::<u32>(), any::<u32>()),
-    ) {
-        // Shrink the height until the box is at most 524287 px^2.
-        let (bw, mut bh) = wh;
-        while (bw as i128) * (bh as i128) > 524_287i128 << 24 {
-            bh /= 2;
-        }
-        let (x0, y0) = (i64::from(c.0).min(MAX - bw), i64::from(c.1).min(MAX - bh));
-        // Two vertices on opposite corners, one anywhere in the box.
-        let a = v(x0 + if corner[0] { bw } else { 0 }, y0 + if corner[1] { bh } else { 0 });
-        let b = v(x0 + if corner[0] { 0 } else { bw }, y0 + if corner[1] { 0 } else { bh });
-        let p = v(x0 + i64::from(d[0]) % (bw + 1), y0 + i64::from(d[1]) % (bh + 1));
-        let t = Triangle::new(a, b, p);
-        let clips = [
-            Rectangle::new(Point::new(i32::MIN, i32::MIN), Size::new(u32::MAX, u32::MAX)),
-            Rectangle::new(Point::new(clip.0, clip.1), Size::new(clip.2, clip.3)),
-        ];
-        for clip in clips {
-            let w = t.step_width(&clip);
-            prop_assert!(w.is_none() || w == Some(StepWidth::Bits32), "{:?}: {:?}", t, w);
-        }
-    }
 }
 
 #[test]
@@ -197,20 +166,14 @@ fn zero_area_lights_nothing() {
         Triangle::new(v(MIN, MIN), v(MAX, MAX), v(0, 0)),
     ];
     for t in cases {
-        assert_eq!(t.step_width(&Grid::new(-16, -16, 32, 32).clip()), None);
         let g = common::rasterized(&t, -16, -16, 32, 32);
         assert!(g.cells.iter().all(|&c| c == 0), "{t:?} lit something");
     }
 }
 
 #[test]
-fn widest_triangles_step_in_64_bits_and_are_exact() {
+fn widest_triangles_are_exact() {
     let t = Triangle::new(v(MIN, MIN), v(MAX, MIN + 5), v(3, MAX));
-    let everywhere = Rectangle::new(
-        Point::new(-(1 << 19), -(1 << 19)),
-        Size::new(1 << 20, 1 << 20),
-    );
-    assert_eq!(t.step_width(&everywhere), Some(StepWidth::Bits64));
     for (x0, y0) in [
         (0, 0),
         (-(1 << 19), -(1 << 19)),
@@ -222,18 +185,16 @@ fn widest_triangles_step_in_64_bits_and_are_exact() {
 }
 
 #[test]
-fn a_screen_sized_triangle_steps_in_32_bits() {
-    let t =
-        Triangle::from_points(Point::new(0, 0), Point::new(719, 5), Point::new(30, 719)).unwrap();
-    let clip = Rectangle::new(Point::zero(), Size::new(720, 720));
-    assert_eq!(t.step_width(&clip), Some(StepWidth::Bits32));
-    // 1024 x 1024 no longer fits in 32 bits as a whole ...
-    let big =
-        Triangle::from_points(Point::new(0, 0), Point::new(1023, 0), Point::new(0, 1023)).unwrap();
-    let screen = Rectangle::new(Point::zero(), Size::new(1024, 1024));
-    assert_eq!(big.step_width(&screen), Some(StepWidth::Bits64));
-    // ... and both widths draw it exactly.
-    assert_exact(&big, 500, 500, 40, 40);
+fn triangles_at_the_32_bit_bound_are_exact() {
+    // Bounding boxes just under and just over 131,070 px a side: the edges
+    // step in i32 and in i64 respectively.
+    for side in [131_060i64, 131_080] {
+        let px = 4096;
+        let t = Triangle::new(v(0, 0), v(side * px - 7, 3), v(5, side * px - 1));
+        assert_exact(&t, 0, 0, 24, 24);
+        assert_exact(&t, side / 2 - 12, side / 2 - 12, 24, 24);
+        assert_exact(&t, 0, side - 24, 24, 24);
+    }
 }
 
 #[test]

@@ -1,9 +1,8 @@
 //! Filled triangles.
 
-mod raster;
+mod fill;
 mod variants;
 
-pub use raster::StepWidth;
 pub use variants::{SubpixelPrecision, TriangleAlgorithm};
 
 use embedded_graphics_core::{
@@ -11,7 +10,12 @@ use embedded_graphics_core::{
     Drawable,
 };
 
-use crate::{CoordinateOutOfRange, Span, Vertex};
+use crate::{
+    error::CoordinateOutOfRange,
+    raster::sink::{DrawTargetSink, SpanDrawable, SpanSink},
+    span::Span,
+    vertex::Vertex,
+};
 
 /// A triangle on the continuous plane, with 20.12 fixed-point vertices in
 /// either winding.
@@ -138,7 +142,7 @@ impl Triangle {
         clip: &Rectangle,
         f: impl FnMut(Span) -> Result<(), E>,
     ) -> Result<(), E> {
-        raster::rasterize(&self.vertices, clip, f)
+        fill::triangle_spans(&self.vertices, clip, f)
     }
 
     /// Like [`for_each_span`](Self::for_each_span), with the vertices
@@ -174,9 +178,9 @@ impl Triangle {
         f: impl FnMut(Span) -> Result<(), E>,
     ) -> Result<(), E> {
         if algorithm == TriangleAlgorithm::EdgeExact && precision == SubpixelPrecision::Bits12 {
-            return raster::rasterize(&self.vertices, clip, f);
+            return fill::triangle_spans(&self.vertices, clip, f);
         }
-        variants::rasterize(algorithm, precision, &self.vertices, clip, f)
+        variants::variant_spans(algorithm, precision, &self.vertices, clip, f)
     }
 
     /// This triangle with its vertices snapped to `precision` (see
@@ -197,56 +201,14 @@ impl Triangle {
             vertices: self.vertices.map(|v| precision.snap(v)),
         }
     }
-
-    /// The integer width [`TriangleAlgorithm::Barycentric`] steps in for
-    /// this triangle at `precision` inside `clip`, or `None` if it scans
-    /// nothing. See [`SubpixelPrecision`] for the ranges.
-    ///
-    /// # Examples
-    ///
-    /// ```
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
-    /// use embedded_raster::{StepWidth, SubpixelPrecision, Triangle, Vertex};
-    ///
-    /// let clip = Rectangle::new(Point::zero(), Size::new(4000, 4000));
-    /// let v = |x: i32, y: i32| Vertex::try_from_num(x, y).unwrap();
-    /// let t = Triangle::new(v(0, 0), v(2000, 0), v(0, 2000));
-    /// assert_eq!(t.barycentric_step_width(SubpixelPrecision::Bits12, &clip), Some(StepWidth::Bits64));
-    /// assert_eq!(t.barycentric_step_width(SubpixelPrecision::Bits4, &clip), Some(StepWidth::Bits32));
-    /// ```
-    pub fn barycentric_step_width(
-        &self,
-        precision: SubpixelPrecision,
-        clip: &Rectangle,
-    ) -> Option<StepWidth> {
-        variants::barycentric_step_width(&self.vertices, precision, clip)
-    }
-
-    /// The integer width [`for_each_span`](Self::for_each_span) steps the
-    /// edge functions in for this triangle inside `clip`, or `None` if it
-    /// has zero area or no candidate pixel inside `clip`. See
-    /// [`StepWidth`].
-    ///
-    /// # Examples
-    ///
-    /// ```
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
-    /// use embedded_raster::{StepWidth, Triangle, Vertex};
-    ///
-    /// let clip = Rectangle::new(Point::new(-400_000, -400_000), Size::new(800_000, 800_000));
-    /// let v = |x: i32, y: i32| Vertex::try_from_num(x, y).unwrap();
-    /// let huge = Triangle::new(v(-300_000, -300_000), v(300_000, -300_000), v(0, 300_000));
-    /// assert_eq!(huge.step_width(&clip), Some(StepWidth::Bits64));
-    /// ```
-    pub fn step_width(&self, clip: &Rectangle) -> Option<StepWidth> {
-        raster::step_width(&self.vertices, clip)
-    }
 }
 
 /// A [`Triangle`] filled with one colour: a [`Drawable`] for any
-/// [`DrawTarget`]. Each row's span from the exact rasterizer goes to the
-/// target as one [`fill_solid`](DrawTarget::fill_solid) call, clipped to the
-/// target's bounding box first.
+/// [`DrawTarget`], and a [`SpanDrawable`] for any [`SpanSink`] (the fast
+/// way onto a [`Framebuffer`](crate::Framebuffer)). Each row's span from
+/// the exact rasterizer is clipped to the target's bounding box and goes to
+/// the target as one [`fill_solid`](DrawTarget::fill_solid) call (or one
+/// [`SpanSink::fill_span`]).
 ///
 /// [`algorithm`](Self::algorithm) and [`precision`](Self::precision) turn it
 /// into a [`FilledTriangleVariant`]: the choice is a type, so firmware that
@@ -324,6 +286,16 @@ impl<C> FilledTriangle<C> {
     }
 }
 
+impl<C: PixelColor> SpanDrawable for FilledTriangle<C> {
+    type Color = C;
+
+    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
+        let clip = sink.bounds();
+        self.triangle
+            .for_each_span(&clip, |span| sink.fill_span(span, self.color))
+    }
+}
+
 impl<C: PixelColor> Drawable for FilledTriangle<C> {
     type Color = C;
     type Output = ();
@@ -332,9 +304,7 @@ impl<C: PixelColor> Drawable for FilledTriangle<C> {
     where
         D: DrawTarget<Color = C>,
     {
-        let clip = target.bounding_box();
-        self.triangle
-            .for_each_span(&clip, |span| target.fill_solid(&span.rect(), self.color))
+        self.draw_spans(&mut DrawTargetSink::new(target))
     }
 }
 
@@ -414,6 +384,18 @@ impl<C> FilledTriangleVariant<C> {
     }
 }
 
+impl<C: PixelColor> SpanDrawable for FilledTriangleVariant<C> {
+    type Color = C;
+
+    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
+        let clip = sink.bounds();
+        self.triangle
+            .for_each_span_with(self.algorithm, self.precision, &clip, |span| {
+                sink.fill_span(span, self.color)
+            })
+    }
+}
+
 impl<C: PixelColor> Drawable for FilledTriangleVariant<C> {
     type Color = C;
     type Output = ();
@@ -422,10 +404,6 @@ impl<C: PixelColor> Drawable for FilledTriangleVariant<C> {
     where
         D: DrawTarget<Color = C>,
     {
-        let clip = target.bounding_box();
-        self.triangle
-            .for_each_span_with(self.algorithm, self.precision, &clip, |span| {
-                target.fill_solid(&span.rect(), self.color)
-            })
+        self.draw_spans(&mut DrawTargetSink::new(target))
     }
 }

@@ -15,7 +15,7 @@
 use embedded_graphics_core::primitives::Rectangle;
 
 use super::SubpixelPrecision;
-use crate::{clip::Bounds, Span, StepWidth, Vertex};
+use crate::{clip::Bounds, Span, Vertex};
 
 /// Oriented, reduced edge functions over the scanned rectangle.
 struct Setup {
@@ -153,7 +153,7 @@ fn run<T: Step, E>(
 }
 
 /// Calls `emit` with each row's span of the snapped `v` inside `clip`.
-pub(super) fn rasterize<E>(
+pub(super) fn barycentric_spans<E>(
     v: &[Vertex; 3],
     precision: SubpixelPrecision,
     clip: &Rectangle,
@@ -170,18 +170,4 @@ pub(super) fn rasterize<E>(
         // Unreachable: every value fits in i64 (module docs).
         Ok(())
     }
-}
-
-/// The width [`rasterize`] steps in, `None` if nothing is scanned.
-pub(crate) fn step_width(
-    v: &[Vertex; 3],
-    precision: SubpixelPrecision,
-    clip: &Rectangle,
-) -> Option<StepWidth> {
-    let v = v.map(|v| precision.snap(v));
-    let s = setup(&v, precision, clip)?;
-    Some(match narrow::<i32>(&s) {
-        Some(_) => StepWidth::Bits32,
-        None => StepWidth::Bits64,
-    })
 }

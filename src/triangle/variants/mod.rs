@@ -18,7 +18,6 @@ use embedded_graphics_core::primitives::Rectangle;
 
 use crate::{Span, Vertex};
 
-pub(crate) use barycentric::step_width as barycentric_step_width;
 
 /// How a [`Triangle`](crate::Triangle) is turned into spans.
 ///
@@ -45,10 +44,11 @@ pub(crate) use barycentric::step_width as barycentric_step_width;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum TriangleAlgorithm {
-    /// The exact edge-equation rasterizer of
-    /// [`Triangle::for_each_span`](crate::Triangle::for_each_span): edge
-    /// functions stepped in reduced integers, each row walked from the
-    /// previous span with galloping strides. Exact and watertight.
+    /// The exact rasterizer of
+    /// [`Triangle::for_each_span`](crate::Triangle::for_each_span): the
+    /// long edge and the active short edge stepped down the rows exactly,
+    /// an integer quotient and remainder per edge, O(1) per row, no work
+    /// per pixel. Exact and watertight.
     #[default]
     EdgeExact,
     /// Per-pixel evaluation of the three edge functions (unnormalised
@@ -56,7 +56,8 @@ pub enum TriangleAlgorithm {
     /// add per edge and pixel, with the same exact top-left test. Lights
     /// exactly the pixels of [`EdgeExact`](Self::EdgeExact), at the cost of
     /// visiting every pixel of the bounding box. Steps in 32 bits when the
-    /// values fit (see [`SubpixelPrecision::max_area_32`]), else 64.
+    /// values fit (a bounding box of at most `2^(31 - u)` px² at `u`
+    /// subpixel bits, `u >= 1`), else 64.
     Barycentric,
     /// Classic edge walking: vertices sorted by y, the triangle split at the
     /// middle vertex into a flat-bottom and a flat-top part, the long edge
@@ -172,7 +173,7 @@ impl fmt::Display for TriangleAlgorithm {
 /// evaluator step in 32 bits for larger triangles: its edge values are
 /// measured in units of `2^-u` px, `u = max(bits, 1)`, and they fit in
 /// `i32` for every triangle whose bounding box covers at most
-/// [`max_area_32`](Self::max_area_32) `= 2^(31 - u) - 1` px² (with both
+/// `2^(31 - u) - 1` px² (with both
 /// sides under `2^(31 - u)` px); larger ones step in 64 bits, which holds
 /// every triangle in range at every precision.
 ///
@@ -243,23 +244,6 @@ impl SubpixelPrecision {
         Self::ALL.into_iter().find(|p| p.bits() == bits)
     }
 
-    /// The largest bounding-box area, in px², for which the
-    /// [`Barycentric`](TriangleAlgorithm::Barycentric) evaluator is
-    /// guaranteed to step in 32 bits at this precision, whatever the clip
-    /// (both sides of the box must also be under `2^(31 - u)` px).
-    ///
-    /// # Examples
-    ///
-    /// ```
-    /// use embedded_raster::SubpixelPrecision;
-    ///
-    /// assert_eq!(SubpixelPrecision::Bits12.max_area_32(), 524_287);
-    /// assert_eq!(SubpixelPrecision::Bits0.max_area_32(), (1 << 30) - 1);
-    /// ```
-    pub const fn max_area_32(self) -> u64 {
-        (1 << (31 - self.unit_bits())) - 1
-    }
-
     /// `u = max(bits, 1)`: edge values are measured in `2^-u` px so that
     /// pixel centres are on the grid.
     pub(crate) const fn unit_bits(self) -> u32 {
@@ -303,7 +287,7 @@ impl fmt::Display for SubpixelPrecision {
 }
 
 /// Dispatches to the variant's rasterizer, on already snapped vertices.
-pub(crate) fn rasterize<E>(
+pub(crate) fn variant_spans<E>(
     algorithm: TriangleAlgorithm,
     precision: SubpixelPrecision,
     vertices: &[Vertex; 3],
@@ -312,9 +296,9 @@ pub(crate) fn rasterize<E>(
 ) -> Result<(), E> {
     let v = vertices.map(|v| precision.snap(v));
     match algorithm {
-        TriangleAlgorithm::EdgeExact => super::raster::rasterize(&v, clip, emit),
-        TriangleAlgorithm::Barycentric => barycentric::rasterize(&v, precision, clip, &mut emit),
-        TriangleAlgorithm::EdgeWalk => walk::rasterize(&v, clip, &mut emit),
-        TriangleAlgorithm::BresenhamWalk => bresenham_walk::rasterize(&v, clip, &mut emit),
+        TriangleAlgorithm::EdgeExact => super::fill::triangle_spans(&v, clip, emit),
+        TriangleAlgorithm::Barycentric => barycentric::barycentric_spans(&v, precision, clip, &mut emit),
+        TriangleAlgorithm::EdgeWalk => walk::edge_walk_spans(&v, clip, &mut emit),
+        TriangleAlgorithm::BresenhamWalk => bresenham_walk::bresenham_walk_spans(&v, clip, &mut emit),
     }
 }

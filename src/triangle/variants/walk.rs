@@ -61,7 +61,7 @@ impl Edge {
 }
 
 /// Calls `emit` with each row's span of the snapped `v` inside `clip`.
-pub(super) fn rasterize<E>(
+pub(super) fn edge_walk_spans<E>(
     v: &[Vertex; 3],
     clip: &Rectangle,
     emit: &mut impl FnMut(Span) -> Result<(), E>,

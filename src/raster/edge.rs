@@ -1,0 +1,190 @@
+//! The exact incremental edge: where an edge crosses each pixel row.
+//!
+//! # Which pixels an edge separates
+//!
+//! Coordinates here are raw 20.12 units relative to the centre of a frame's
+//! top-left pixel (see [`Frame`](super::frame::Frame)), so row `k` samples
+//! `y = 4096 k` and column `i` has its centre at `x = 4096 i`. The sampling
+//! rule nudges a centre to `(x + e, y + e^2)`, so an edge from `(x0, y0)`
+//! down to `(x1, y1)` (`y0 < y1`) crosses the sample line of row `k` iff
+//! `y0 <= 4096 k < y1`: a horizontal edge crosses none. On such a row the
+//! nudged centre of column `i` lies right of the edge iff `4096 i >= x(y)`,
+//! the edge's exact crossing (the `e` outweighs the `e^2` term whatever
+//! the slope). So the edge splits the row at the *threshold*
+//!
+//! ```text
+//! X = ceil(x(y) / 4096) = ceil(ceil(x(y)) / 4096),   x(y) = x0 + (y - y0) dx / dy
+//! ```
+//!
+//! and columns `X..` lie right of it. A triangle's span is `X_left..X_right`;
+//! a polygon sums the windings of the edges whose threshold is at or left
+//! of a column.
+//!
+//! # Stepping in O(1), without division
+//!
+//! The edge keeps `x = ceil(x(y))`, the crossing rounded up to a raw unit,
+//! and the remainder `s = x dy - (x0 dy + (y - y0) dx)`, `0 <= s < dy`. One
+//! row down adds `4096 dx = q dy + r` (`0 <= r < dy`, divided once at
+//! setup) to the numerator, so
+//!
+//! ```text
+//! if s < r { x += q + 1; s += dy - r } else { x += q; s -= r }
+//! ```
+//!
+//! one compare and two adds per row, exact.
+//!
+//! # Widths
+//!
+//! The setup divides twice (the first crossing and `q`), in 32 bits when
+//! the operands fit (a single hardware division on a Cortex-M), else in 64
+//! or, for a product of two 33-bit differences, 128 bits
+//! ([`mul_div_ceil`]). The state steps in `T`: with every relative
+//! coordinate below `2^29` in magnitude, `x`, `q`, `s`, `dy` and
+//! `x + 4095` all stay below `2^31` (`|q| <= |dx| + 1` once the edge spans
+//! two rows, since then `dy > 4096`), so `i32` is exact; `i64` always is.
+
+use super::wide::{div_rem_floor, mul_div_ceil, Wide};
+
+/// Raw units per pixel.
+const ONE: i64 = 1 << 12;
+
+/// The first row whose sample line `4096 k` is at or below `y`.
+pub(crate) const fn first_row_at_or_below(y: i64) -> i64 {
+    (y + (ONE - 1)) >> 12
+}
+
+/// An edge's crossing of consecutive rows, stepped exactly in `T`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Edge<T> {
+    /// First and last row the edge crosses (the first is no higher than
+    /// the row it was started on).
+    pub first_row: i32,
+    pub last_row: i32,
+    /// `ceil(x(y))` on the current row.
+    x: T,
+    /// `x dy` minus the exact numerator, in `0..dy`.
+    s: T,
+    /// `4096 dx = q dy + r`; `dr = dy - r`.
+    q: T,
+    r: T,
+    dr: T,
+}
+
+impl<T: Wide> Edge<T> {
+    /// The edge from `top` to `bottom` (relative raw units, `top.1 <
+    /// bottom.1`), started on its first row at or below row `from_row`.
+    /// `None` if it crosses no row from there, or a value does not fit `T`
+    /// (which the caller's bound rules out, module docs).
+    pub(crate) fn new(top: (i64, i64), bottom: (i64, i64), from_row: i32) -> Option<Self> {
+        let (dx, dy) = (bottom.0 - top.0, bottom.1 - top.1);
+        let first = first_row_at_or_below(top.1).max(i64::from(from_row));
+        let last = first_row_at_or_below(bottom.1) - 1;
+        if first > last || dy <= 0 {
+            return None;
+        }
+        // 0 <= ey < dy: the sample line lies on the edge.
+        let ey = first * ONE - top.1;
+        let (c, s) = mul_div_ceil(ey, dx, dy)?;
+        let (q, r) = if first < last {
+            div_rem_floor(dx * ONE, dy)?
+        } else {
+            // Never stepped.
+            (0, 0)
+        };
+        Some(Self {
+            first_row: i32::try_from(first).ok()?,
+            last_row: i32::try_from(last).ok()?,
+            x: T::narrow(top.0 + c)?,
+            s: T::narrow(s)?,
+            q: T::narrow(q)?,
+            r: T::narrow(r)?,
+            dr: T::narrow(dy - r)?,
+        })
+    }
+
+    /// `ceil(x(y))` on the current row, in raw units: edges meeting at a
+    /// row compare by it.
+    #[inline(always)]
+    pub(crate) fn crossing(&self) -> T {
+        self.x
+    }
+
+    /// The threshold column on the current row: columns from it on lie
+    /// right of the edge.
+    #[inline(always)]
+    pub(crate) fn threshold(&self) -> T {
+        threshold_of(self.x)
+    }
+
+    /// Moves to the next row.
+    #[inline(always)]
+    pub(crate) fn step(&mut self) {
+        if self.s < self.r {
+            self.x = self.x + self.q + T::ONE;
+            self.s = self.s + self.dr;
+        } else {
+            self.x = self.x + self.q;
+            self.s = self.s - self.r;
+        }
+    }
+}
+
+/// The column threshold of a crossing `x` (raw units): `ceil(x / 4096)`.
+#[inline(always)]
+pub(crate) fn threshold_of<T: Wide>(x: T) -> T {
+    // Shifting a 4095-larger value: no overflow within the bound of the
+    // module docs.
+    (x + T::narrow(ONE - 1).unwrap_or(T::ZERO)) >> 12
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The threshold computed from scratch with exact rationals (u128-free:
+    /// i128 numerators), independent of the stepping.
+    fn direct(top: (i64, i64), bottom: (i64, i64), row: i64) -> i64 {
+        let (dx, dy) = (i128::from(bottom.0 - top.0), i128::from(bottom.1 - top.1));
+        // x(y) = x0 + (4096 row - y0) dx / dy; threshold = ceil(x(y) / 4096).
+        let num = i128::from(top.0) * dy + (i128::from(row) * 4096 - i128::from(top.1)) * dx;
+        let den = 4096 * dy;
+        (-((-num).div_euclid(den))) as i64
+    }
+
+    fn check(top: (i64, i64), bottom: (i64, i64), from: i32) {
+        let Some(mut e) = Edge::<i64>::new(top, bottom, from) else {
+            return;
+        };
+        let mut narrow = Edge::<i32>::new(top, bottom, from);
+        for row in e.first_row..=e.last_row {
+            let want = direct(top, bottom, row.into());
+            assert_eq!(e.threshold(), want, "{top:?} {bottom:?} row {row}");
+            if let Some(n) = narrow.as_mut() {
+                assert_eq!(i64::from(n.threshold()), want, "i32, row {row}");
+            }
+            if row < e.last_row {
+                e.step();
+                if let Some(n) = narrow.as_mut() {
+                    n.step();
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn stepping_matches_direct_thresholds() {
+        check((3 * 4096 + 1229, -700), (-20 * 4096 - 410, 40 * 4096 + 3686), i32::MIN);
+        check((0, 0), (1, 100 * 4096), -5);
+        check((0, -1), (-5_000_000, 7 * 4096 + 1), 2);
+        check((17, 4096), (17, 3 * 4096), 0);
+    }
+
+    #[test]
+    fn the_whole_range() {
+        let (lo, hi) = (-(1i64 << 32), (1i64 << 32) - 1);
+        let e = Edge::<i64>::new((lo, lo), (hi, hi), 0).unwrap();
+        assert_eq!(e.threshold(), direct((lo, lo), (hi, hi), 0));
+        let e = Edge::<i64>::new((hi, lo + 3), (lo, hi), 1 << 19).unwrap();
+        assert_eq!(e.threshold(), direct((hi, lo + 3), (lo, hi), 1 << 19));
+    }
+}

@@ -1,0 +1,194 @@
+//! Span sinks: where rasterized shapes write their pixels.
+//!
+//! Shapes never touch pixels themselves. They compute which pixels they
+//! light as spans (and, for lines, columns) already clipped to the sink's
+//! [`bounds`](SpanSink::bounds), and hand them to a [`SpanSink`], which
+//! writes them: the crate's [`Framebuffer`](crate::Framebuffer) straight
+//! into its rows of bytes, any other `DrawTarget` through
+//! [`DrawTargetSink`] and `fill_solid`.
+
+use embedded_graphics_core::{
+    draw_target::DrawTarget,
+    geometry::{Point, Size},
+    primitives::Rectangle,
+};
+
+use crate::span::Span;
+
+/// Receives the pixels a shape lights, already clipped: the one place
+/// where rasterized shapes meet memory or a display.
+///
+/// Every span, column and rectangle passed to a sink lies inside its
+/// [`bounds`](Self::bounds) and is not empty; implementations may rely on
+/// it for speed, but must still never write outside their storage or
+/// panic if a caller breaks it.
+///
+/// # Examples
+///
+/// Count the pixels of a triangle, without drawing it anywhere:
+///
+/// ```
+/// use core::convert::Infallible;
+/// use embedded_graphics_core::{geometry::{Point, Size}, pixelcolor::BinaryColor, primitives::Rectangle};
+/// use embedded_raster::{Span, SpanDrawable, SpanSink, Triangle};
+///
+/// struct Counter(u32);
+///
+/// impl SpanSink<BinaryColor> for Counter {
+///     type Error = Infallible;
+///     fn bounds(&self) -> Rectangle {
+///         Rectangle::new(Point::zero(), Size::new(64, 64))
+///     }
+///     fn fill_span(&mut self, span: Span, _: BinaryColor) -> Result<(), Infallible> {
+///         self.0 += span.len();
+///         Ok(())
+///     }
+/// }
+///
+/// let t = Triangle::from_points(Point::new(0, 0), Point::new(9, 0), Point::new(0, 9)).unwrap();
+/// let mut counter = Counter(0);
+/// t.fill(BinaryColor::On).draw_spans(&mut counter)?;
+/// assert_eq!(counter.0, 45);
+/// # Ok::<(), Infallible>(())
+/// ```
+pub trait SpanSink<C> {
+    /// What writing can fail with.
+    type Error;
+
+    /// The rectangle all spans, columns and rectangles given to this sink
+    /// lie in.
+    fn bounds(&self) -> Rectangle;
+
+    /// Sets the pixels of `span` to `color`.
+    fn fill_span(&mut self, span: Span, color: C) -> Result<(), Self::Error>;
+
+    /// Sets `len` pixels from `top` downwards to `color` (a run of a steep
+    /// line). The provided implementation calls
+    /// [`fill_span`](Self::fill_span) per pixel.
+    fn fill_column(&mut self, top: Point, len: u32, color: C) -> Result<(), Self::Error>
+    where
+        C: Copy,
+    {
+        let mut y = top.y;
+        for _ in 0..len {
+            self.fill_span(Span { y, x_start: top.x, x_end: top.x.saturating_add(1) }, color)?;
+            y = y.saturating_add(1);
+        }
+        Ok(())
+    }
+
+    /// Sets every pixel of `area` to `color`. The provided implementation
+    /// calls [`fill_span`](Self::fill_span) per row.
+    fn fill_rect(&mut self, area: &Rectangle, color: C) -> Result<(), Self::Error>
+    where
+        C: Copy,
+    {
+        let x_start = area.top_left.x;
+        let x_end = x_start.saturating_add_unsigned(area.size.width);
+        let mut y = area.top_left.y;
+        for _ in 0..area.size.height {
+            self.fill_span(Span { y, x_start, x_end }, color)?;
+            y = y.saturating_add(1);
+        }
+        Ok(())
+    }
+}
+
+/// A shape that rasterizes into any [`SpanSink`]: each of the crate's
+/// filled and stroked drawables. Its [`Drawable`] implementation is
+/// `draw_spans` on a [`DrawTargetSink`].
+///
+/// [`Drawable`]: embedded_graphics_core::Drawable
+///
+/// # Examples
+///
+/// The direct way onto a [`Framebuffer`](crate::Framebuffer): spans go
+/// straight into its rows.
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::{Rgb565, RgbColor}, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, Rgb565Le}, Framebuffer, SpanDrawable, Triangle};
+///
+/// let mut fb = Framebuffer::<Rgb565Le, 16, 16, { buffer_size::<Rgb565Le>(16, 16) }>::new();
+/// let t = Triangle::from_points(Point::new(1, 1), Point::new(14, 3), Point::new(5, 12)).unwrap();
+/// t.fill(Rgb565::RED).draw_spans(&mut fb)?;
+/// assert_eq!(fb.pixel(Point::new(6, 5)), Some(Rgb565::RED));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+pub trait SpanDrawable {
+    /// The colour it draws in.
+    type Color;
+
+    /// Writes the shape's pixels into `sink`, clipped to its bounds, and
+    /// stops at the first error.
+    fn draw_spans<S: SpanSink<Self::Color>>(&self, sink: &mut S) -> Result<(), S::Error>;
+}
+
+/// Any [`DrawTarget`] as a [`SpanSink`]: each span, column and rectangle
+/// becomes one [`fill_solid`](DrawTarget::fill_solid) call.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_raster::{DrawTargetSink, SpanSink, Span};
+///
+/// let mut display = MockDisplay::<BinaryColor>::new();
+/// let mut sink = DrawTargetSink::new(&mut display);
+/// sink.fill_span(Span { y: 1, x_start: 0, x_end: 3 }, BinaryColor::On)?;
+/// display.assert_pattern(&[
+///     "   ",
+///     "###",
+/// ]);
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug)]
+pub struct DrawTargetSink<'a, D> {
+    target: &'a mut D,
+    bounds: Rectangle,
+}
+
+impl<'a, D: DrawTarget> DrawTargetSink<'a, D> {
+    /// Wraps `target`; its bounding box is read once, here.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::mock_display::MockDisplay;
+    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_raster::{DrawTargetSink, SpanSink};
+    ///
+    /// let mut display = MockDisplay::<BinaryColor>::new();
+    /// let sink = DrawTargetSink::new(&mut display);
+    /// assert_eq!(sink.bounds().size, Size::new(64, 64));
+    /// ```
+    pub fn new(target: &'a mut D) -> Self {
+        let bounds = target.bounding_box();
+        Self { target, bounds }
+    }
+}
+
+impl<D: DrawTarget> SpanSink<D::Color> for DrawTargetSink<'_, D> {
+    type Error = D::Error;
+
+    fn bounds(&self) -> Rectangle {
+        self.bounds
+    }
+
+    #[inline]
+    fn fill_span(&mut self, span: Span, color: D::Color) -> Result<(), D::Error> {
+        self.target.fill_solid(&span.rect(), color)
+    }
+
+    #[inline]
+    fn fill_column(&mut self, top: Point, len: u32, color: D::Color) -> Result<(), D::Error> {
+        self.target
+            .fill_solid(&Rectangle::new(top, Size::new(1, len)), color)
+    }
+
+    #[inline]
+    fn fill_rect(&mut self, area: &Rectangle, color: D::Color) -> Result<(), D::Error> {
+        self.target.fill_solid(area, color)
+    }
+}
