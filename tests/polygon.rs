@@ -543,3 +543,23 @@ fn clip_rectangles_at_the_ends_of_i32() {
         assert!(rows <= 2, "{clip:?}: {rows}");
     }
 }
+
+/// Issue 12: an edge spanning nearly the whole 20.12 range overflowed the
+/// 64-bit threshold setup (`c * d`) in builds with overflow checks. The
+/// reproducer scene, on its 8 x 8 target.
+#[test]
+fn issue_12_edge_across_the_whole_range() {
+    let raw = |x: f64| (x * 4096.0) as i64;
+    let poly = [
+        v(raw(-524285.999755859375), raw(-524288.0)),
+        v(raw(524287.999755859375), raw(524287.999755859375)),
+        v(raw(-524285.999755859375), raw(524287.999755859375)),
+    ];
+    for even_odd in [false, true] {
+        assert_same(
+            &scanline(&poly, even_odd, 0, 0, 8, 8),
+            &reference_fill(&poly, even_odd, 0, 0, 8, 8),
+            "reproducer",
+        );
+    }
+}

@@ -6,8 +6,8 @@
 //! table and active edge list live in `heapless` storage on the stack whose
 //! capacity `N` (vertices) the caller picks: a [`Polygon<N>`](Polygon) of
 //! more than `N` vertices cannot be made, so drawing never runs out of room.
-//! The storage is 84 bytes per vertex of capacity on a 32-bit target (an
-//! 80-byte edge record and a `usize` slot in the active list).
+//! The storage is 60 bytes per vertex of capacity on a 32-bit target (a
+//! 56-byte edge record and a `usize` slot in the active list).
 //!
 //! Pixels follow the crate's sampling rule, as triangles do: a pixel is lit
 //! iff its centre nudged by `(e, e^2)` has a non-zero winding number
@@ -255,7 +255,7 @@ impl<'a, const N: usize> Polygon<'a, N> {
         clip: &Rectangle,
         f: impl FnMut(Span) -> Result<(), E>,
     ) -> Result<(), E> {
-        scanline::fill::<N, E>(self.vertices, rule, clip, f)
+        scanline::polygon_spans::<N, E>(self.vertices, rule, clip, f)
     }
 
     /// Cuts the polygon into triangles and calls `f` with each: a fan for a
