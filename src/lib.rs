@@ -91,8 +91,8 @@ pub use line::{
     StyledPolylineVariant,
 };
 pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError};
-pub use shade::GouraudTriangle;
 pub use raster::sink::{DrawTargetSink, SpanDrawable, SpanSink};
+pub use shade::GouraudTriangle;
 pub use span::Span;
 pub use triangle::{
     FilledTriangle, FilledTriangleVariant, SubpixelPrecision, Triangle, TriangleAlgorithm,

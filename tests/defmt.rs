@@ -7,8 +7,8 @@
 use embedded_graphics_core::pixelcolor::{BinaryColor, Rgb565};
 use embedded_raster::{
     framebuffer::{buffer_size, BinaryMsb, Gray8Bytes, Rgb565Be, Rgb565Le, Rgb888Bytes},
-    CoordinateOutOfRange, FilledTriangle, Framebuffer, ParseCoordinateError, Span,
-    Triangle, Vertex,
+    CoordinateOutOfRange, FilledTriangle, Framebuffer, ParseCoordinateError, Span, Triangle,
+    Vertex,
 };
 
 fn implements_format<T: defmt::Format + ?Sized>() {}

@@ -10,7 +10,7 @@
 #[path = "../examples/common/builtin_scene.rs"]
 mod builtin_scene;
 
-use builtin_scene::{SceneBuffer, HUGE, SCREEN, TWIN};
+use builtin_scene::{SceneBuffer, HUGE, TWIN};
 use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
 
 fn host_render() -> (Box<SceneBuffer>, u32) {

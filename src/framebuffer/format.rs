@@ -236,12 +236,9 @@ pub struct Gray8Bytes;
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct BinaryMsb;
 
-/// Spans of at least this many bytes of a pixel size that is not a power
-/// of two are filled by copying a prepared block of this size.
-const BLOCK: usize = 48;
-
 /// The bytes of pixels `xs` in a row of `B`-byte pixels, if all are in
 /// `row`.
+#[inline]
 fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Option<&mut [u8]> {
     row.get_mut(xs.start.checked_mul(B)?..xs.end.checked_mul(B)?)
 }
@@ -250,34 +247,56 @@ fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Option<&mut [u
 /// copy only if `bytes.len()` is not a multiple of `B`.
 ///
 /// One `memset` if all bytes of `pixel` are equal (black, white, any
-/// grey); otherwise a per-pixel loop, which the compiler turns into wide
-/// stores for 2- and 4-byte pixels, or for other sizes and long spans, a
-/// 48-byte block of whole pixels copied repeatedly.
+/// grey). Otherwise the widest safe stores: the bytes up to the first
+/// 4-byte boundary one at a time, then aligned 32-bit words of the
+/// repeating pattern (for 2- and 4-byte pixels one word repeated, which
+/// the compiler turns into multi-register stores on a Cortex-M and vector
+/// stores on a host; for 3-byte pixels a block of three words), then the
+/// last bytes. Spans of a few pixels are written pixel by pixel.
+#[inline]
 fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     let Some(&first) = pixel.first() else { return };
     if pixel.iter().all(|&b| b == first) {
         bytes.fill(first);
-        return;
-    }
-    if B.is_power_of_two() || bytes.len() < 2 * BLOCK {
-        for px in bytes.chunks_exact_mut(B) {
-            px.copy_from_slice(&pixel);
+    } else if bytes.len() < 4 * B {
+        for px in bytes.chunks_mut(B) {
+            px.copy_from_slice(&pixel[..px.len()]);
         }
-        return;
+    } else {
+        fill_words(bytes, pixel);
     }
-    let mut block = [0u8; BLOCK];
-    for px in block.chunks_exact_mut(B) {
-        px.copy_from_slice(&pixel);
+}
+
+/// [`fill_bytes`] through aligned words.
+fn fill_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
+    // Byte `i` of the span is byte `i % B` of the pixel.
+    let at = |i: usize| pixel[i % B];
+    let (head, words, tail) = bytemuck::pod_align_to_mut::<u8, u32>(bytes);
+    for (i, b) in head.iter_mut().enumerate() {
+        *b = at(i);
     }
-    let Some(block) = block.get(..BLOCK / B * B) else {
-        return;
-    };
-    let mut chunks = bytes.chunks_exact_mut(block.len());
-    for chunk in &mut chunks {
-        chunk.copy_from_slice(block);
+    // Four pixels are B whole words; this block starts where `words` does.
+    let offset = head.len();
+    let mut block = [0u32; B];
+    for (k, w) in block.iter_mut().enumerate() {
+        let i = offset + 4 * k;
+        *w = u32::from_ne_bytes([at(i), at(i + 1), at(i + 2), at(i + 3)]);
     }
-    for (dst, src) in chunks.into_remainder().iter_mut().zip(block) {
-        *dst = *src;
+    if 4 % B == 0 {
+        words.fill(block[0]);
+    } else {
+        let mut chunks = words.chunks_exact_mut(B);
+        for chunk in &mut chunks {
+            chunk.copy_from_slice(&block);
+        }
+        let rest = chunks.into_remainder();
+        for (w, b) in rest.iter_mut().zip(block) {
+            *w = b;
+        }
+    }
+    let offset = offset + 4 * words.len();
+    for (i, b) in tail.iter_mut().enumerate() {
+        *b = at(offset + i);
     }
 }
 

@@ -89,7 +89,11 @@ use embedded_graphics_core::{
     Pixel,
 };
 
-use crate::clip::{clip_to, row_major_skips};
+use crate::{
+    clip::{clip_to, row_major_skips},
+    raster::sink::SpanSink,
+    span::Span,
+};
 
 /// Bytes a row of `width` pixels takes in format `F`:
 /// `ceil(width * F::BITS_PER_PIXEL / 8)`.
@@ -165,9 +169,15 @@ pub const fn buffer_size<F: PixelFormat>(width: usize, height: usize) -> usize {
 /// # Ok::<(), core::convert::Infallible>(())
 /// ```
 pub struct Framebuffer<F, const W: usize, const H: usize, const N: usize> {
-    data: [u8; N],
+    data: Aligned<N>,
     format: PhantomData<F>,
 }
+
+/// The pixel bytes, starting on a 4-byte boundary so that rows of a
+/// whole number of words can be filled with aligned word stores.
+#[derive(Clone, Copy, PartialEq, Eq)]
+#[repr(C, align(4))]
+struct Aligned<const N: usize>([u8; N]);
 
 impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer<F, W, H, N> {
     /// Bytes per row.
@@ -212,7 +222,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
             );
         }
         Self {
-            data: [0; N],
+            data: Aligned([0; N]),
             format: PhantomData,
         }
     }
@@ -231,7 +241,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     /// # Ok::<(), core::convert::Infallible>(())
     /// ```
     pub const fn as_bytes(&self) -> &[u8] {
-        &self.data
+        &self.data.0
     }
 
     /// The pixel bytes, for writing directly, e.g. to load an image.
@@ -247,7 +257,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     /// assert_eq!(fb.pixel(Point::new(1, 1)), Some(Gray8::new(9)));
     /// ```
     pub const fn as_bytes_mut(&mut self) -> &mut [u8] {
-        &mut self.data
+        &mut self.data.0
     }
 
     /// The colour of the pixel at `p`, or `None` if `p` is outside.
@@ -281,13 +291,13 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     /// The bytes of row `y`, or `None` if there is no such row.
     fn row(&self, y: usize) -> Option<&[u8]> {
         let start = y.checked_mul(Self::STRIDE)?;
-        self.data.get(start..start.checked_add(Self::STRIDE)?)
+        self.data.0.get(start..start.checked_add(Self::STRIDE)?)
     }
 
     /// The bytes of row `y`, or `None` if there is no such row.
     fn row_mut(&mut self, y: usize) -> Option<&mut [u8]> {
         let start = y.checked_mul(Self::STRIDE)?;
-        self.data.get_mut(start..start.checked_add(Self::STRIDE)?)
+        self.data.0.get_mut(start..start.checked_add(Self::STRIDE)?)
     }
 
     /// Rows `ys` as byte slices, and the pixels `xs` of each to draw.
@@ -303,7 +313,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     ) -> (ChunksExactMut<'_, u8>, Range<usize>) {
         let stride = Self::STRIDE;
         let bytes = match (ys.start.checked_mul(stride), ys.end.checked_mul(stride)) {
-            (Some(start), Some(end)) => self.data.get_mut(start..end).unwrap_or_default(),
+            (Some(start), Some(end)) => self.data.0.get_mut(start..end).unwrap_or_default(),
             _ => Default::default(),
         };
         let whole_rows = merge && Self::UNPADDED && xs.start == 0 && xs.end == W;
@@ -389,6 +399,65 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
             F::fill_span(row, span.clone(), color);
         }
         Ok(())
+    }
+}
+
+/// Spans go straight into the rows: no clipping (the rasterizers have
+/// clipped to [`bounds`](SpanSink::bounds)) and no conversion beyond the
+/// byte offsets, each checked, so a span outside is ignored, never a
+/// panic.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, Span, SpanSink};
+///
+/// let mut fb = Framebuffer::<Gray8Bytes, 4, 2, { buffer_size::<Gray8Bytes>(4, 2) }>::new();
+/// fb.fill_span(Span { y: 1, x_start: 1, x_end: 3 }, Gray8::new(9))?;
+/// fb.fill_column(Point::new(0, 0), 2, Gray8::new(5))?;
+/// assert_eq!(fb.as_bytes(), [5, 0, 0, 0, 5, 9, 9, 0]);
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F::Color>
+    for Framebuffer<F, W, H, N>
+{
+    type Error = Infallible;
+
+    fn bounds(&self) -> Rectangle {
+        Rectangle::new(Point::zero(), self.size())
+    }
+
+    #[inline]
+    fn fill_span(&mut self, span: Span, color: F::Color) -> Result<(), Infallible> {
+        if let (Ok(y), Ok(x0), Ok(x1)) = (
+            usize::try_from(span.y),
+            usize::try_from(span.x_start),
+            usize::try_from(span.x_end),
+        ) {
+            if let Some(row) = self.row_mut(y) {
+                F::fill_span(row, x0..x1, color);
+            }
+        }
+        Ok(())
+    }
+
+    fn fill_column(&mut self, top: Point, len: u32, color: F::Color) -> Result<(), Infallible> {
+        if let (Ok(x), Ok(y), Ok(len)) = (
+            usize::try_from(top.x),
+            usize::try_from(top.y),
+            usize::try_from(len),
+        ) {
+            let rows = self.data.0.chunks_exact_mut(Self::STRIDE.max(1));
+            for row in rows.skip(y).take(len) {
+                F::write_pixel(row, x, color);
+            }
+        }
+        Ok(())
+    }
+
+    fn fill_rect(&mut self, area: &Rectangle, color: F::Color) -> Result<(), Infallible> {
+        self.fill_solid(area, color)
     }
 }
 

@@ -8,12 +8,11 @@
 //! `[-2 dmajor, 2 dmajor]`, so the loop runs in `i32` for lines shorter
 //! than `2^30` pixels along their major axis and in `i64` otherwise.
 
-use core::ops::{Add, Sub};
-
 use super::{
     clip::{Canonical, Visible},
     Run,
 };
+use crate::raster::wide::Wide;
 
 /// Calls `emit` with the runs of the visible part `v` of `c`, in order of
 /// growing major coordinate.
@@ -30,37 +29,20 @@ pub(crate) fn runs<E>(
     }
 }
 
-/// An integer the decision variable is stepped in.
-trait Decision: Copy + Ord + Add<Output = Self> + Sub<Output = Self> {
-    const ZERO: Self;
-    /// `v` in this type; only called with values that fit.
-    fn from_i64(v: i64) -> Self;
-}
-
-impl Decision for i32 {
-    const ZERO: Self = 0;
-    fn from_i64(v: i64) -> Self {
-        // Callers pass values within [-2^31, 2^31): see `runs`.
-        i32::try_from(v).unwrap_or_default()
-    }
-}
-
-impl Decision for i64 {
-    const ZERO: Self = 0;
-    fn from_i64(v: i64) -> Self {
-        v
-    }
-}
-
 #[inline(always)]
-fn step<T: Decision, const X_MAJOR: bool, E>(
+fn step<T: Wide, const X_MAJOR: bool, E>(
     c: &Canonical,
     v: &Visible,
     emit: &mut impl FnMut(Run) -> Result<(), E>,
 ) -> Result<(), E> {
-    let two_minor = T::from_i64(2 * c.dminor);
-    let two_major = T::from_i64(2 * c.dmajor);
-    let mut d = T::from_i64(v.decision);
+    // Within [-2 dmajor, 2 dmajor]: `runs` picks a width that holds them.
+    let (Some(two_minor), Some(two_major), Some(mut d)) = (
+        T::narrow(2 * c.dminor),
+        T::narrow(2 * c.dmajor),
+        T::narrow(v.decision),
+    ) else {
+        return Ok(());
+    };
     let s: i32 = if c.minor_step > 0 { 1 } else { -1 };
     let (mut major, last, mut minor) = (v.first_major, v.last_major, v.first_minor);
     let mut start = major;

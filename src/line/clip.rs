@@ -49,7 +49,7 @@
 //! A line that lies wholly inside the clip rectangle takes the textbook
 //! start, `D = 2 dminor - dmajor - b`, without any division.
 
-use core::ops::{Add, Mul, Neg, Sub};
+use crate::raster::wide::Wide;
 
 use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 
@@ -173,7 +173,7 @@ impl Canonical {
     /// The steps `lo..=hi` narrowed to offsets `m_lo..=m_hi`, the offset
     /// and the decision variable at the first: `(lo, hi, m, D)`, computed
     /// in `W`.
-    fn entry<W: Wide>(
+    fn entry<W: Wide + From<i64>>(
         &self,
         lo: i64,
         hi: i64,
@@ -192,9 +192,12 @@ impl Canonical {
             // m is 0 everywhere, and 0 is in m_lo..=m_hi.
         } else {
             // First step with m(k) >= m: ceil((2 dmaj m - dmaj + b) / (2 dmin)).
-            let first = |m: i64| -(-(two * dmaj * w(m) - dmaj + b)).div_floor(two * dmin);
-            lo = lo.max(first(m_lo));
-            hi = hi.min(first(m_hi + 1) - w(1));
+            let first = |m: i64| {
+                let (q, _) = (-(two * dmaj * w(m) - dmaj + b)).div_rem_floor(two * dmin)?;
+                Some(-q)
+            };
+            lo = lo.max(first(m_lo)?);
+            hi = hi.min(first(m_hi + 1)? - w(1));
         }
         if lo > hi {
             return None;
@@ -203,44 +206,10 @@ impl Canonical {
             (w(0), w(0))
         } else {
             let num = two * dmin * lo + dmaj - b;
-            let m = num.div_floor(two * dmaj);
-            let r = num - two * dmaj * m;
+            let (m, r) = num.div_rem_floor(two * dmaj)?;
             (m, r + two * dmin - two * dmaj)
         };
         Some((lo.to_i64()?, hi.to_i64()?, m.to_i64()?, d.to_i64()?))
-    }
-}
-
-/// An integer wide enough for the clipping arithmetic.
-trait Wide:
-    Copy
-    + Ord
-    + From<i64>
-    + Add<Output = Self>
-    + Sub<Output = Self>
-    + Mul<Output = Self>
-    + Neg<Output = Self>
-{
-    /// `floor(self / d)` for `d > 0`.
-    fn div_floor(self, d: Self) -> Self;
-    fn to_i64(self) -> Option<i64>;
-}
-
-impl Wide for i64 {
-    fn div_floor(self, d: Self) -> Self {
-        self.div_euclid(d)
-    }
-    fn to_i64(self) -> Option<i64> {
-        Some(self)
-    }
-}
-
-impl Wide for i128 {
-    fn div_floor(self, d: Self) -> Self {
-        self.div_euclid(d)
-    }
-    fn to_i64(self) -> Option<i64> {
-        i64::try_from(self).ok()
     }
 }
 

@@ -30,7 +30,7 @@
 //!
 //! Pixels come out as [`Run`]s: horizontal runs of x-major lines and
 //! vertical runs of y-major lines, each one
-//! [`fill_solid`](DrawTarget::fill_solid) call.
+//! [`fill_solid`](embedded_graphics_core::draw_target::DrawTarget::fill_solid) call.
 //!
 //! # Variants
 //!
@@ -57,14 +57,15 @@ mod variants;
 pub use polyline::{Polyline, StyledPolyline, StyledPolylineVariant};
 
 use embedded_graphics_core::{
-    draw_target::DrawTarget,
     geometry::{Point, Size},
     pixelcolor::PixelColor,
     primitives::Rectangle,
-    Drawable,
 };
 
-use crate::Span;
+use crate::{
+    raster::sink::{drawable_through_spans, SpanDrawable, SpanSink},
+    span::Span,
+};
 use clip::Canonical;
 
 /// A run of pixels of a line: `len` pixels from `start`, going right
@@ -114,7 +115,7 @@ impl Run {
     }
 
     /// The run as a one-pixel-wide rectangle, for
-    /// [`fill_solid`](DrawTarget::fill_solid).
+    /// [`fill_solid`](embedded_graphics_core::draw_target::DrawTarget::fill_solid).
     ///
     /// # Examples
     ///
@@ -426,10 +427,10 @@ impl RunSource for LineAlgorithm {
     }
 }
 
-/// A [`Line`] with a colour and a width: a [`Drawable`].
+/// A [`Line`] with a colour and a width: a [`Drawable`](embedded_graphics_core::Drawable).
 ///
 /// Width 1 (the default) draws the exact 1-pixel line, one
-/// [`fill_solid`](DrawTarget::fill_solid) per [`Run`]. Width 0 draws
+/// [`fill_solid`](embedded_graphics_core::draw_target::DrawTarget::fill_solid) per [`Run`]. Width 0 draws
 /// nothing. Wider lines are filled rectangles (see the [module
 /// docs](self#thick-lines)) drawn with the triangle rasterizer, one
 /// `fill_solid` per row span. Widths above 65535 px draw as 65535 px.
@@ -501,20 +502,16 @@ impl<C> StyledLine<C> {
     }
 }
 
-impl<C: PixelColor> Drawable for StyledLine<C> {
+impl<C: PixelColor> SpanDrawable for StyledLine<C> {
     type Color = C;
-    type Output = ();
 
-    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        draw_segment(self.line, self.width, Exact, false, self.color, target)
+    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
+        draw_segment(self.line, self.width, Exact, false, self.color, sink)
     }
 }
 
 /// A [`StyledLine`] whose 1-pixel pixels come from a chosen
-/// [`LineAlgorithm`], made by [`StyledLine::algorithm`]: a [`Drawable`].
+/// [`LineAlgorithm`], made by [`StyledLine::algorithm`]: a [`Drawable`](embedded_graphics_core::Drawable).
 /// Thick lines are the same rectangles whatever the algorithm.
 ///
 /// # Examples
@@ -577,46 +574,61 @@ impl<C> StyledLineVariant<C> {
     }
 }
 
-impl<C: PixelColor> Drawable for StyledLineVariant<C> {
+impl<C: PixelColor> SpanDrawable for StyledLineVariant<C> {
     type Color = C;
-    type Output = ();
 
-    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
+    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
         draw_segment(
             self.line,
             self.width,
             self.algorithm,
             false,
             self.color,
-            target,
+            sink,
         )
     }
 }
 
-/// Draws one line (or polyline segment) on `target`.
-fn draw_segment<C: PixelColor, D: DrawTarget<Color = C>>(
+drawable_through_spans!(StyledLine, StyledLineVariant);
+
+/// Draws one line (or polyline segment) into `sink`.
+fn draw_segment<C: PixelColor, S: SpanSink<C>>(
     line: Line,
     width: u32,
     source: impl RunSource,
     skip_end: bool,
     color: C,
-    target: &mut D,
-) -> Result<(), D::Error> {
-    let clip = target.bounding_box();
+    sink: &mut S,
+) -> Result<(), S::Error> {
+    let clip = sink.bounds();
     match width {
         0 => Ok(()),
         1 => source.runs(&line, &clip, skip_end, &mut |r: Run| {
-            target.fill_solid(&r.rect(), color)
+            fill_run(sink, r, color)
         }),
         w => match thick::triangles(line.start, line.end, w, &clip) {
             Some(tris) => tris
                 .iter()
-                .try_for_each(|t| t.for_each_span(&clip, |s| target.fill_solid(&s.rect(), color))),
+                .try_for_each(|t| t.for_each_span(&clip, |s| sink.fill_span(s, color))),
             None => Ok(()),
         },
+    }
+}
+
+/// Writes a run (inside the sink's bounds) into `sink`.
+#[inline(always)]
+fn fill_run<C: PixelColor, S: SpanSink<C>>(
+    sink: &mut S,
+    run: Run,
+    color: C,
+) -> Result<(), S::Error> {
+    if run.vertical {
+        return sink.fill_column(run.start, run.len, color);
+    }
+    match run.span() {
+        Some(span) => sink.fill_span(span, color),
+        // A run ending at i32::MAX, which a span cannot hold.
+        None => sink.fill_rect(&run.rect(), color),
     }
 }
 

@@ -1,11 +1,9 @@
 //! Polylines: connected lines over a borrowed list of points.
 
-use embedded_graphics_core::{
-    draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor, primitives::Rectangle,
-    Drawable,
-};
+use embedded_graphics_core::{geometry::Point, pixelcolor::PixelColor, primitives::Rectangle};
 
 use super::{draw_segment, Exact, Line, LineAlgorithm, Run, RunSource};
+use crate::raster::sink::{drawable_through_spans, SpanDrawable, SpanSink};
 
 /// Connected lines through `points`, in order, each joint pixel lit once.
 ///
@@ -127,7 +125,7 @@ impl<'a> Polyline<'a> {
     }
 }
 
-/// A [`Polyline`] with a colour and a width: a [`Drawable`] of exact
+/// A [`Polyline`] with a colour and a width: a [`Drawable`](embedded_graphics_core::Drawable) of exact
 /// segments ([`algorithm`](Self::algorithm) gives a [`StyledPolylineVariant`]).
 /// Width 0 draws nothing; see [`Polyline`] for the other widths.
 ///
@@ -193,21 +191,17 @@ impl<'a, C> StyledPolyline<'a, C> {
     }
 }
 
-impl<C: PixelColor> Drawable for StyledPolyline<'_, C> {
+impl<C: PixelColor> SpanDrawable for StyledPolyline<'_, C> {
     type Color = C;
-    type Output = ();
 
-    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        draw_polyline(&self.polyline, self.width, Exact, self.color, target)
+    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
+        draw_polyline(&self.polyline, self.width, Exact, self.color, sink)
     }
 }
 
 /// A [`StyledPolyline`] whose 1-pixel segments come from a chosen
 /// [`LineAlgorithm`], made by [`StyledPolyline::algorithm`]: a
-/// [`Drawable`].
+/// [`Drawable`](embedded_graphics_core::Drawable).
 ///
 /// # Examples
 ///
@@ -269,35 +263,27 @@ impl<C> StyledPolylineVariant<'_, C> {
     }
 }
 
-impl<C: PixelColor> Drawable for StyledPolylineVariant<'_, C> {
+impl<C: PixelColor> SpanDrawable for StyledPolylineVariant<'_, C> {
     type Color = C;
-    type Output = ();
 
-    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        draw_polyline(
-            &self.polyline,
-            self.width,
-            self.algorithm,
-            self.color,
-            target,
-        )
+    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
+        draw_polyline(&self.polyline, self.width, self.algorithm, self.color, sink)
     }
 }
 
-/// Draws every segment, each joint pixel once.
-fn draw_polyline<C: PixelColor, D: DrawTarget<Color = C>>(
+drawable_through_spans!(StyledPolyline<'_>, StyledPolylineVariant<'_>);
+
+/// Draws every segment into `sink`, each joint pixel once.
+fn draw_polyline<C: PixelColor, S: SpanSink<C>>(
     polyline: &Polyline<'_>,
     width: u32,
     source: impl RunSource,
     color: C,
-    target: &mut D,
-) -> Result<(), D::Error> {
+    sink: &mut S,
+) -> Result<(), S::Error> {
     polyline.segments().try_for_each(|(line, skip_end)| {
         // Thick segments are whole rectangles: no pixel to leave out.
-        draw_segment(line, width, source, skip_end && width == 1, color, target)
+        draw_segment(line, width, source, skip_end && width == 1, color, sink)
     })
 }
 

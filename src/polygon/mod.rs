@@ -27,7 +27,13 @@ use embedded_graphics_core::{
     Drawable,
 };
 
-use crate::{clip::Bounds, Span, Triangle, Vertex};
+use crate::{
+    clip::Bounds,
+    raster::sink::{DrawTargetSink, SpanDrawable, SpanSink},
+    span::Span,
+    triangle::Triangle,
+    vertex::Vertex,
+};
 
 /// Which pixels inside a self-overlapping outline are filled.
 ///
@@ -378,6 +384,34 @@ impl<'a, C, const N: usize> FilledPolygon<'a, C, N> {
     }
 }
 
+impl<C: PixelColor, const N: usize> SpanDrawable for FilledPolygon<'_, C, N> {
+    type Color = C;
+
+    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
+        let clip = sink.bounds();
+        if let Some(rect) = self.polygon.as_pixel_rect() {
+            let Some(b) = rect.intersect(Bounds::of(&clip)) else {
+                return Ok(());
+            };
+            // Inside the clip rectangle: all of it fits i32 and u32.
+            let (Ok(x), Ok(y), Ok(w), Ok(h)) = (
+                i32::try_from(b.x0),
+                i32::try_from(b.y0),
+                u32::try_from(b.x1 - b.x0),
+                u32::try_from(b.y1 - b.y0),
+            ) else {
+                return Ok(());
+            };
+            return sink.fill_rect(
+                &Rectangle::new(Point::new(x, y), Size::new(w, h)),
+                self.color,
+            );
+        }
+        self.polygon
+            .for_each_span(self.rule, &clip, |span| sink.fill_span(span, self.color))
+    }
+}
+
 impl<C: PixelColor, const N: usize> Drawable for FilledPolygon<'_, C, N> {
     type Color = C;
     type Output = ();
@@ -386,20 +420,6 @@ impl<C: PixelColor, const N: usize> Drawable for FilledPolygon<'_, C, N> {
     where
         D: DrawTarget<Color = C>,
     {
-        let clip = target.bounding_box();
-        if let Some(rect) = self.polygon.as_pixel_rect() {
-            let Some(b) = rect.intersect(Bounds::of(&clip)) else {
-                return Ok(());
-            };
-            // Inside the clip rectangle: all of it fits i32 and u32.
-            let area = Rectangle::new(
-                Point::new(b.x0 as i32, b.y0 as i32),
-                Size::new((b.x1 - b.x0) as u32, (b.y1 - b.y0) as u32),
-            );
-            return target.fill_solid(&area, self.color);
-        }
-        self.polygon.for_each_span(self.rule, &clip, |span| {
-            target.fill_solid(&span.rect(), self.color)
-        })
+        self.draw_spans(&mut DrawTargetSink::new(target))
     }
 }

@@ -34,7 +34,10 @@ impl Frame {
             lo = (lo.0.min(x), lo.1.min(y));
             hi = (hi.0.max(x), hi.1.max(y));
         }
-        let (lo, hi) = ((i64::from(lo.0), i64::from(lo.1)), (i64::from(hi.0), i64::from(hi.1)));
+        let (lo, hi) = (
+            (i64::from(lo.0), i64::from(lo.1)),
+            (i64::from(hi.0), i64::from(hi.1)),
+        );
         // Pixels whose centres 4096 i + 2048 lie in [lo, hi].
         let half = ONE / 2;
         let candidates = Bounds {
@@ -45,11 +48,16 @@ impl Frame {
         };
         let scan = candidates.intersect(Bounds::of(clip))?;
         let centre = (scan.x0 * ONE + half, scan.y0 * ONE + half);
-        let reach = [lo.0 - centre.0, hi.0 - centre.0, lo.1 - centre.1, hi.1 - centre.1]
-            .into_iter()
-            .map(i64::unsigned_abs)
-            .max()
-            .unwrap_or(0);
+        let reach = [
+            lo.0 - centre.0,
+            hi.0 - centre.0,
+            lo.1 - centre.1,
+            hi.1 - centre.1,
+        ]
+        .into_iter()
+        .map(i64::unsigned_abs)
+        .max()
+        .unwrap_or(0);
         // The scan lies within the vertex range: |i| <= 2^19 + 1.
         Some(Self {
             origin: Point::new(i32::try_from(scan.x0).ok()?, i32::try_from(scan.y0).ok()?),

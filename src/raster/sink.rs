@@ -71,7 +71,14 @@ pub trait SpanSink<C> {
     {
         let mut y = top.y;
         for _ in 0..len {
-            self.fill_span(Span { y, x_start: top.x, x_end: top.x.saturating_add(1) }, color)?;
+            self.fill_span(
+                Span {
+                    y,
+                    x_start: top.x,
+                    x_end: top.x.saturating_add(1),
+                },
+                color,
+            )?;
             y = y.saturating_add(1);
         }
         Ok(())
@@ -192,3 +199,29 @@ impl<D: DrawTarget> SpanSink<D::Color> for DrawTargetSink<'_, D> {
         self.target.fill_solid(area, color)
     }
 }
+
+/// Implements [`Drawable`](embedded_graphics_core::Drawable) for a
+/// [`SpanDrawable`] with a `color` field's type parameter `C`: drawing on
+/// a `DrawTarget` is drawing spans on a [`DrawTargetSink`] of it.
+macro_rules! drawable_through_spans {
+    ($($ty:ident $(<$lt:lifetime>)?),* $(,)?) => {$(
+        impl<C: embedded_graphics_core::pixelcolor::PixelColor>
+            embedded_graphics_core::Drawable for $ty<$($lt,)? C>
+        {
+            type Color = C;
+            type Output = ();
+
+            fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
+            where
+                D: embedded_graphics_core::draw_target::DrawTarget<Color = C>,
+            {
+                $crate::raster::sink::SpanDrawable::draw_spans(
+                    self,
+                    &mut $crate::raster::sink::DrawTargetSink::new(target),
+                )
+            }
+        }
+    )*};
+}
+
+pub(crate) use drawable_through_spans;

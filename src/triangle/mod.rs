@@ -5,14 +5,11 @@ mod variants;
 
 pub use variants::{SubpixelPrecision, TriangleAlgorithm};
 
-use embedded_graphics_core::{
-    draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor, primitives::Rectangle,
-    Drawable,
-};
+use embedded_graphics_core::{geometry::Point, pixelcolor::PixelColor, primitives::Rectangle};
 
 use crate::{
     error::CoordinateOutOfRange,
-    raster::sink::{DrawTargetSink, SpanDrawable, SpanSink},
+    raster::sink::{drawable_through_spans, SpanDrawable, SpanSink},
     span::Span,
     vertex::Vertex,
 };
@@ -203,11 +200,11 @@ impl Triangle {
     }
 }
 
-/// A [`Triangle`] filled with one colour: a [`Drawable`] for any
-/// [`DrawTarget`], and a [`SpanDrawable`] for any [`SpanSink`] (the fast
+/// A [`Triangle`] filled with one colour: a [`Drawable`](embedded_graphics_core::Drawable) for any
+/// [`DrawTarget`](embedded_graphics_core::draw_target::DrawTarget), and a [`SpanDrawable`] for any [`SpanSink`] (the fast
 /// way onto a [`Framebuffer`](crate::Framebuffer)). Each row's span from
 /// the exact rasterizer is clipped to the target's bounding box and goes to
-/// the target as one [`fill_solid`](DrawTarget::fill_solid) call (or one
+/// the target as one [`fill_solid`](embedded_graphics_core::draw_target::DrawTarget::fill_solid) call (or one
 /// [`SpanSink::fill_span`]).
 ///
 /// [`algorithm`](Self::algorithm) and [`precision`](Self::precision) turn it
@@ -296,22 +293,10 @@ impl<C: PixelColor> SpanDrawable for FilledTriangle<C> {
     }
 }
 
-impl<C: PixelColor> Drawable for FilledTriangle<C> {
-    type Color = C;
-    type Output = ();
-
-    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        self.draw_spans(&mut DrawTargetSink::new(target))
-    }
-}
-
 /// A filled triangle drawn with a chosen [`TriangleAlgorithm`] at a chosen
 /// [`SubpixelPrecision`], made by [`FilledTriangle::algorithm`] or
 /// [`FilledTriangle::precision`]. Spans go to the target as
-/// [`fill_solid`](DrawTarget::fill_solid) calls, as for [`FilledTriangle`].
+/// [`fill_solid`](embedded_graphics_core::draw_target::DrawTarget::fill_solid) calls, as for [`FilledTriangle`].
 ///
 /// # Examples
 ///
@@ -384,6 +369,8 @@ impl<C> FilledTriangleVariant<C> {
     }
 }
 
+drawable_through_spans!(FilledTriangle);
+
 impl<C: PixelColor> SpanDrawable for FilledTriangleVariant<C> {
     type Color = C;
 
@@ -396,14 +383,4 @@ impl<C: PixelColor> SpanDrawable for FilledTriangleVariant<C> {
     }
 }
 
-impl<C: PixelColor> Drawable for FilledTriangleVariant<C> {
-    type Color = C;
-    type Output = ();
-
-    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        self.draw_spans(&mut DrawTargetSink::new(target))
-    }
-}
+drawable_through_spans!(FilledTriangleVariant);

@@ -18,7 +18,6 @@ use embedded_graphics_core::primitives::Rectangle;
 
 use crate::{Span, Vertex};
 
-
 /// How a [`Triangle`](crate::Triangle) is turned into spans.
 ///
 /// | variant | pixels lit | watertight |
@@ -297,8 +296,12 @@ pub(crate) fn variant_spans<E>(
     let v = vertices.map(|v| precision.snap(v));
     match algorithm {
         TriangleAlgorithm::EdgeExact => super::fill::triangle_spans(&v, clip, emit),
-        TriangleAlgorithm::Barycentric => barycentric::barycentric_spans(&v, precision, clip, &mut emit),
+        TriangleAlgorithm::Barycentric => {
+            barycentric::barycentric_spans(&v, precision, clip, &mut emit)
+        }
         TriangleAlgorithm::EdgeWalk => walk::edge_walk_spans(&v, clip, &mut emit),
-        TriangleAlgorithm::BresenhamWalk => bresenham_walk::bresenham_walk_spans(&v, clip, &mut emit),
+        TriangleAlgorithm::BresenhamWalk => {
+            bresenham_walk::bresenham_walk_spans(&v, clip, &mut emit)
+        }
     }
 }
