@@ -22,6 +22,14 @@ SUITES = {
         ["span fill", "embedded-graphics", "tiny-skia"],
         "tri",
     ),
+    "pools": (
+        ["pool tiny 4 px", "pool small 16 px", "pool medium 64 px", "pool large 240 px",
+         "pool mesh 32x24 of 10 px"],
+        ["limit", "draw", "draw_spans", "for_each_span", "EdgeWalk@12", "tiny-skia",
+         "embedded-graphics"],
+        [],
+        "tri",
+    ),
     "polygons": (
         ["hexagons 18 px (x60)", "convex 24-gon 200 px", "concave star 24 vertices 200 px",
          "pentagram 200 px (self-intersecting)"],
@@ -47,6 +55,17 @@ def result(group, peer):
 
 groups, peers, ratios, unit = SUITES[BENCH]
 first = peers[0]
+if BENCH == "pools":
+    # Each contender's speed as a fraction of the limit's (limit time / time).
+    print("| pool | triangles | px each | limit ns/tri | " + " | ".join(peers[1:]) + " |")
+    print("|---" * (3 + len(peers)) + "|")
+    for g in groups:
+        r = {p: result(g, p) for p in peers}
+        ns, pixels, count = r[first]
+        row = [g.removeprefix("pool "), str(count), f"{pixels / count:,.0f}", f"{ns / count:,.0f}"]
+        row += ["-" if r[p] is None else f"{ns / r[p][0]:.2f}" for p in peers[1:]]
+        print("| " + " | ".join(row) + " |")
+    sys.exit(0)
 print(f"| {BENCH} | px | " + " | ".join(f"{p} ns/{unit}" for p in peers)
       + f" | {first} Mpx/s | " + " | ".join(f"time ÷ {p}" for p in ratios) + " |")
 print("|---" * (3 + len(peers) + len(ratios)) + "|")

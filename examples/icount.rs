@@ -45,7 +45,8 @@ mod target {
         Drawable, Pixel,
     };
     use embedded_raster::{
-        FillRule, Line, Polygon, StepWidth, StyledLine, Triangle, TriangleAlgorithm, Vertex,
+        FillRule, Line, Polygon, Span, SpanDrawable, StyledLine, Triangle, TriangleAlgorithm,
+        Vertex,
     };
 
     use super::builtin_scene::{self, SceneBuffer, HUGE, SCREEN, TWIN};
@@ -166,25 +167,55 @@ mod target {
             }
         }
 
-        /// The triangles' setup alone: [`Triangle::step_width`] runs it
-        /// (orientation, edge equations, the 32-bit range check).
+        /// The same on the framebuffer through its span sink (the direct
+        /// path); rectangles through `fill_solid`.
+        fn draw_spans(self, fb: &mut SceneBuffer) {
+            let Ok(()) = match self {
+                Batch::Triangles(ts) => ts.iter().try_for_each(|(t, c)| t.fill(*c).draw_spans(fb)),
+                Batch::Variants(a, ts) => ts
+                    .iter()
+                    .try_for_each(|(t, c)| t.fill(*c).algorithm(a).draw_spans(fb)),
+                Batch::Rects(rs) => rs.iter().try_for_each(|r| fb.fill_solid(r, BLUE)),
+                Batch::Lines(ls) => ls.iter().try_for_each(|l| l.draw_spans(fb)),
+                Batch::Polygons(ps) => ps.iter().try_for_each(|&(v, rule)| {
+                    let polygon = Polygon::<12>::new(v).expect("at most 12 vertices");
+                    polygon.fill(BLUE).with_rule(rule).draw_spans(fb)
+                }),
+            };
+        }
+
+        /// The triangles' setup: everything up to their first span (sorting,
+        /// clipping, orientation, the three edges, the first row), measured
+        /// by stopping each triangle's rasterizer at its first span.
         fn setup(self) {
             if let Batch::Triangles(ts) = self {
                 for (t, _) in ts {
-                    black_box(black_box(t).step_width(black_box(&SCREEN)));
+                    let first = |_: Span| Err(());
+                    let _ = black_box(black_box(t).for_each_span(black_box(&SCREEN), first));
                 }
             }
         }
 
-        /// The triangles' edge-stepping width.
+        /// The triangles' edge-stepping width: 32 bits when the bounding
+        /// box is under 131,070 px a side.
         fn width(self) -> &'static str {
             let Batch::Triangles(ts) = self else {
                 return "-";
             };
-            let w = |want| ts.iter().all(|(t, _)| t.step_width(&SCREEN) == Some(want));
-            match (w(StepWidth::Bits32), w(StepWidth::Bits64)) {
+            let narrow = |t: &Triangle| {
+                let (xs, ys) = (t.vertices.map(|v| v.raw().0), t.vertices.map(|v| v.raw().1));
+                let side = |c: [i32; 3]| {
+                    let (lo, hi) = (c.iter().min().unwrap(), c.iter().max().unwrap());
+                    i64::from(*hi) - i64::from(*lo)
+                };
+                side(xs) < (131_070 << 12) && side(ys) < (131_070 << 12)
+            };
+            match (
+                ts.iter().all(|(t, _)| narrow(t)),
+                ts.iter().any(|(t, _)| narrow(t)),
+            ) {
                 (true, _) => "32-bit",
-                (_, true) => "64-bit",
+                (false, false) => "64-bit",
                 _ => "mixed",
             }
         }
@@ -267,9 +298,7 @@ mod target {
         let Ok(()) = batch.draw(&mut recorder);
         let (len, pixels) = (recorder.len, recorder.pixels);
         let spans = &rects[..len];
-        let drawn = counter.count(|| {
-            let Ok(()) = batch.draw(fb);
-        });
+        let drawn = counter.count(|| batch.draw_spans(fb));
         let setup = counter.count(|| batch.setup());
         let filled = counter.count(|| {
             for r in spans {

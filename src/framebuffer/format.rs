@@ -253,14 +253,15 @@ fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Option<&mut [u
 /// the compiler turns into multi-register stores on a Cortex-M and vector
 /// stores on a host; for 3-byte pixels a block of three words), then the
 /// last bytes. Spans of a few pixels are written pixel by pixel.
-#[inline]
+#[inline(always)]
 fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     let Some(&first) = pixel.first() else { return };
     if pixel.iter().all(|&b| b == first) {
         bytes.fill(first);
     } else if bytes.len() < 4 * B {
-        for px in bytes.chunks_mut(B) {
-            px.copy_from_slice(&pixel[..px.len()]);
+        // Whole pixels only: `bytes` is a span of them.
+        for px in bytes.chunks_exact_mut(B) {
+            px.copy_from_slice(&pixel);
         }
     } else {
         fill_words(bytes, pixel);
@@ -268,31 +269,42 @@ fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
 }
 
 /// [`fill_bytes`] through aligned words.
+#[inline]
 fn fill_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     // Byte `i` of the span is byte `i % B` of the pixel.
     let at = |i: usize| pixel[i % B];
     let (head, words, tail) = bytemuck::pod_align_to_mut::<u8, u32>(bytes);
+    let offset = head.len();
+    if offset % B == 0 && 4 % B == 0 {
+        // Whole pixels up to the boundary (for 2-byte pixels in a
+        // word-aligned buffer: none or one), then one repeated word.
+        for px in head.chunks_exact_mut(B) {
+            px.copy_from_slice(&pixel);
+        }
+        let word = u32::from_ne_bytes([at(0), at(1), at(2), at(3)]);
+        words.fill(word);
+        // The tail is whole pixels too: the span and the head are.
+        for px in tail.chunks_exact_mut(B) {
+            px.copy_from_slice(&pixel);
+        }
+        return;
+    }
     for (i, b) in head.iter_mut().enumerate() {
         *b = at(i);
     }
     // Four pixels are B whole words; this block starts where `words` does.
-    let offset = head.len();
     let mut block = [0u32; B];
     for (k, w) in block.iter_mut().enumerate() {
         let i = offset + 4 * k;
         *w = u32::from_ne_bytes([at(i), at(i + 1), at(i + 2), at(i + 3)]);
     }
-    if 4 % B == 0 {
-        words.fill(block[0]);
-    } else {
-        let mut chunks = words.chunks_exact_mut(B);
-        for chunk in &mut chunks {
-            chunk.copy_from_slice(&block);
-        }
-        let rest = chunks.into_remainder();
-        for (w, b) in rest.iter_mut().zip(block) {
-            *w = b;
-        }
+    let mut chunks = words.chunks_exact_mut(B);
+    for chunk in &mut chunks {
+        chunk.copy_from_slice(&block);
+    }
+    let rest = chunks.into_remainder();
+    for (w, b) in rest.iter_mut().zip(block) {
+        *w = b;
     }
     let offset = offset + 4 * words.len();
     for (i, b) in tail.iter_mut().enumerate() {
@@ -333,6 +345,7 @@ macro_rules! byte_format {
             type Color = $color;
             const BITS_PER_PIXEL: usize = 8 * $bytes;
 
+            #[inline(always)]
             fn fill_span(row: &mut [u8], xs: Range<usize>, color: $color) {
                 if let Some(bytes) = byte_span::<$bytes>(row, xs) {
                     fill_bytes(bytes, $encode(color));

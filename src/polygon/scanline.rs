@@ -37,7 +37,7 @@ struct Directed {
 
 impl Directed {
     fn new(frame: &Frame, from: Vertex, to: Vertex) -> Option<Self> {
-        let (a, b) = (frame.relative(from), frame.relative(to));
+        let (a, b) = (frame.relative::<i64>(from)?, frame.relative::<i64>(to)?);
         let (top, bottom, winding) = match a.1.cmp(&b.1) {
             Ordering::Less => (a, b, 1),
             Ordering::Greater => (b, a, -1),

@@ -28,7 +28,7 @@
 //! setup) to the numerator, so
 //!
 //! ```text
-//! if s < r { x += q + 1; s += dy - r } else { x += q; s -= r }
+//! wrap = s < r;   x += q + wrap;   s += (wrap ? dy : 0) - r
 //! ```
 //!
 //! one compare and two adds per row, exact.
@@ -43,14 +43,17 @@
 //! `x + 4095` all stay below `2^31` (`|q| <= |dx| + 1` once the edge spans
 //! two rows, since then `dy > 4096`), so `i32` is exact; `i64` always is.
 
-use super::wide::{div_rem_floor, mul_div_ceil, Wide};
+use super::wide::{div_rem_double, mul_div_ceil, Narrow, Wide};
 
-/// Raw units per pixel.
-const ONE: i64 = 1 << 12;
+/// Raw units per pixel, and its logarithm.
+const ONE: i32 = 1 << SHIFT;
+const SHIFT: u32 = 12;
 
-/// The first row whose sample line `4096 k` is at or below `y`.
-pub(crate) const fn first_row_at_or_below(y: i64) -> i64 {
-    (y + (ONE - 1)) >> 12
+/// The first row whose sample line `4096 k` is at or below `y` (relative
+/// raw units below `2^29` in magnitude for `i32`, so no overflow).
+#[inline(always)]
+fn first_row_at_or_below<T: Wide>(y: T) -> T {
+    (y + T::narrow(i64::from(ONE - 1)).unwrap_or(T::ZERO)) >> SHIFT
 }
 
 /// An edge's crossing of consecutive rows, stepped exactly in `T`.
@@ -64,44 +67,49 @@ pub(crate) struct Edge<T> {
     x: T,
     /// `x dy` minus the exact numerator, in `0..dy`.
     s: T,
-    /// `4096 dx = q dy + r`; `dr = dy - r`.
+    /// `4096 dx = q dy + r`.
     q: T,
     r: T,
-    dr: T,
+    dy: T,
+}
+
+impl<T: Narrow> Edge<T> {
+    /// The edge from `top` to `bottom` (relative raw units below
+    /// [`Wide::COORD_BOUND`], `top.1 < bottom.1`), started on its first
+    /// row at or below row `from_row`. `None` if it crosses no row from
+    /// there.
+    #[inline(always)]
+    pub(crate) fn new(top: (T, T), bottom: (T, T), from_row: i32) -> Option<Self> {
+        // Differences of coordinates below COORD_BOUND fit T.
+        let (dx, dy) = (bottom.0 - top.0, bottom.1 - top.1);
+        let first = first_row_at_or_below(top.1).max(T::narrow(from_row.into())?);
+        let last = first_row_at_or_below(bottom.1) - T::ONE;
+        if first > last {
+            return None;
+        }
+        let one = T::narrow(ONE.into())?;
+        // 0 <= ey < dy: the sample line lies on the edge.
+        let ey = first * one - top.1;
+        let (c, s) = mul_div_ceil(ey, dx, dy)?;
+        let (q, r) = if first < last {
+            div_rem_double(T::Double::from(dx) * T::Double::from(one), dy)?
+        } else {
+            // Never stepped.
+            (T::ZERO, T::ZERO)
+        };
+        Some(Self {
+            first_row: first.to_i32()?,
+            last_row: last.to_i32()?,
+            x: top.0 + c,
+            s,
+            q,
+            r,
+            dy,
+        })
+    }
 }
 
 impl<T: Wide> Edge<T> {
-    /// The edge from `top` to `bottom` (relative raw units, `top.1 <
-    /// bottom.1`), started on its first row at or below row `from_row`.
-    /// `None` if it crosses no row from there, or a value does not fit `T`
-    /// (which the caller's bound rules out, module docs).
-    pub(crate) fn new(top: (i64, i64), bottom: (i64, i64), from_row: i32) -> Option<Self> {
-        let (dx, dy) = (bottom.0 - top.0, bottom.1 - top.1);
-        let first = first_row_at_or_below(top.1).max(i64::from(from_row));
-        let last = first_row_at_or_below(bottom.1) - 1;
-        if first > last || dy <= 0 {
-            return None;
-        }
-        // 0 <= ey < dy: the sample line lies on the edge.
-        let ey = first * ONE - top.1;
-        let (c, s) = mul_div_ceil(ey, dx, dy)?;
-        let (q, r) = if first < last {
-            div_rem_floor(dx * ONE, dy)?
-        } else {
-            // Never stepped.
-            (0, 0)
-        };
-        Some(Self {
-            first_row: i32::try_from(first).ok()?,
-            last_row: i32::try_from(last).ok()?,
-            x: T::narrow(top.0 + c)?,
-            s: T::narrow(s)?,
-            q: T::narrow(q)?,
-            r: T::narrow(r)?,
-            dr: T::narrow(dy - r)?,
-        })
-    }
-
     /// `ceil(x(y))` on the current row, in raw units: edges meeting at a
     /// row compare by it.
     #[inline(always)]
@@ -116,25 +124,23 @@ impl<T: Wide> Edge<T> {
         threshold_of(self.x)
     }
 
-    /// Moves to the next row.
+    /// Moves to the next row. Written as selects, not branches: whether
+    /// the remainder wraps is data, and a mispredicted branch per row
+    /// would cost more than the whole step.
     #[inline(always)]
     pub(crate) fn step(&mut self) {
-        if self.s < self.r {
-            self.x = self.x + self.q + T::ONE;
-            self.s = self.s + self.dr;
-        } else {
-            self.x = self.x + self.q;
-            self.s = self.s - self.r;
-        }
+        let wrap = self.s < self.r;
+        self.x = self.x + self.q + if wrap { T::ONE } else { T::ZERO };
+        self.s = self.s - self.r + if wrap { self.dy } else { T::ZERO };
     }
 }
 
 /// The column threshold of a crossing `x` (raw units): `ceil(x / 4096)`.
 #[inline(always)]
 pub(crate) fn threshold_of<T: Wide>(x: T) -> T {
-    // Shifting a 4095-larger value: no overflow within the bound of the
-    // module docs.
-    (x + T::narrow(ONE - 1).unwrap_or(T::ZERO)) >> 12
+    // A crossing lies on its edge: below the coordinate bound, so adding
+    // 4095 does not overflow.
+    first_row_at_or_below(x)
 }
 
 #[cfg(test)]
@@ -155,7 +161,11 @@ mod tests {
         let Some(mut e) = Edge::<i64>::new(top, bottom, from) else {
             return;
         };
-        let mut narrow = Edge::<i32>::new(top, bottom, from);
+        let small = |v: i64| i32::try_from(v).ok().filter(|v| v.unsigned_abs() < 1 << 29);
+        let mut narrow = match (small(top.0), small(top.1), small(bottom.0), small(bottom.1)) {
+            (Some(a), Some(b), Some(c), Some(d)) => Edge::<i32>::new((a, b), (c, d), from),
+            _ => None,
+        };
         for row in e.first_row..=e.last_row {
             let want = direct(top, bottom, row.into());
             assert_eq!(e.threshold(), want, "{top:?} {bottom:?} row {row}");

@@ -3,10 +3,8 @@
 
 use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 
-use crate::{clip::Bounds, Vertex};
-
-/// Raw units per pixel.
-const ONE: i64 = 1 << 12;
+use super::wide::Wide;
+use crate::vertex::Vertex;
 
 /// The pixels of a clip rectangle whose centres lie in a shape's bounding
 /// box (the only ones the sampling rule can light), with the shape's raw
@@ -19,14 +17,27 @@ pub(crate) struct Frame {
     pub width: i32,
     pub height: i32,
     /// Raw coordinates of the origin's centre.
-    centre: (i64, i64),
-    /// Largest magnitude of a relative coordinate of the shape.
-    reach: u64,
+    centre: (i32, i32),
+}
+
+/// The first pixel whose centre `4096 i + 2048` is at or right of `raw`:
+/// `ceil((raw - 2048) / 4096)`, without overflow for any `i32`.
+#[inline(always)]
+const fn first_centre_at_or_after(raw: i32) -> i32 {
+    (raw >> 12) + (((raw & 4095) + 2047) >> 12)
+}
+
+/// The last pixel whose centre is at or left of `raw`: `floor((raw -
+/// 2048) / 4096)`, without overflow for any `i32`.
+#[inline(always)]
+const fn last_centre_at_or_before(raw: i32) -> i32 {
+    (raw >> 12) + (((raw & 4095) - 2048) >> 12)
 }
 
 impl Frame {
     /// The frame of the shape with these vertices inside `clip`; `None` if
     /// no pixel centre of `clip` lies in their bounding box.
+    #[inline]
     pub(crate) fn around(vertices: &[Vertex], clip: &Rectangle) -> Option<Self> {
         let (mut lo, mut hi) = ((i32::MAX, i32::MAX), (i32::MIN, i32::MIN));
         for v in vertices {
@@ -34,51 +45,38 @@ impl Frame {
             lo = (lo.0.min(x), lo.1.min(y));
             hi = (hi.0.max(x), hi.1.max(y));
         }
-        let (lo, hi) = (
-            (i64::from(lo.0), i64::from(lo.1)),
-            (i64::from(hi.0), i64::from(hi.1)),
-        );
-        // Pixels whose centres 4096 i + 2048 lie in [lo, hi].
-        let half = ONE / 2;
-        let candidates = Bounds {
-            x0: (lo.0 - half + ONE - 1) >> 12,
-            y0: (lo.1 - half + ONE - 1) >> 12,
-            x1: ((hi.0 - half) >> 12) + 1,
-            y1: ((hi.1 - half) >> 12) + 1,
-        };
-        let scan = candidates.intersect(Bounds::of(clip))?;
-        let centre = (scan.x0 * ONE + half, scan.y0 * ONE + half);
-        let reach = [
-            lo.0 - centre.0,
-            hi.0 - centre.0,
-            lo.1 - centre.1,
-            hi.1 - centre.1,
-        ]
-        .into_iter()
-        .map(i64::unsigned_abs)
-        .max()
-        .unwrap_or(0);
-        // The scan lies within the vertex range: |i| <= 2^19 + 1.
+        // Pixels lie within +-(2^19 + 1): saturating the clip's far edge at
+        // i32::MAX changes nothing.
+        let end = |start: i32, len: u32| start.saturating_add_unsigned(len);
+        let x0 = first_centre_at_or_after(lo.0).max(clip.top_left.x);
+        let y0 = first_centre_at_or_after(lo.1).max(clip.top_left.y);
+        let x1 = (last_centre_at_or_before(hi.0) + 1).min(end(clip.top_left.x, clip.size.width));
+        let y1 = (last_centre_at_or_before(hi.1) + 1).min(end(clip.top_left.y, clip.size.height));
+        if x0 >= x1 || y0 >= y1 {
+            return None;
+        }
+        // |x0|, |y0| <= 2^19, so the centres lie within +-(2^31 - 2048).
+        let centre = |p: i32| p.checked_mul(4096)?.checked_add(2048);
         Some(Self {
-            origin: Point::new(i32::try_from(scan.x0).ok()?, i32::try_from(scan.y0).ok()?),
-            width: i32::try_from(scan.x1 - scan.x0).ok()?,
-            height: i32::try_from(scan.y1 - scan.y0).ok()?,
-            centre,
-            reach,
+            origin: Point::new(x0, y0),
+            width: x1 - x0,
+            height: y1 - y0,
+            centre: (centre(x0)?, centre(y0)?),
         })
     }
 
-    /// `v` in raw units from the origin's centre: `|x|, |y| < 2^33`.
-    #[inline]
-    pub(crate) fn relative(&self, v: Vertex) -> (i64, i64) {
+    /// `v` in raw units from the origin's centre, in `T` if both
+    /// coordinates are below [`Wide::COORD_BOUND`] (always for `i64`:
+    /// `|x|, |y| < 2^32`).
+    #[inline(always)]
+    pub(crate) fn relative<T: Wide>(&self, v: Vertex) -> Option<(T, T)> {
         let (x, y) = v.raw();
-        (i64::from(x) - self.centre.0, i64::from(y) - self.centre.1)
-    }
-
-    /// Whether every relative coordinate is below `2^29` in magnitude, so
-    /// that edges step exactly in `i32` (see [`Edge`](super::edge::Edge)):
-    /// true for any shape whose bounding box is under 131,070 px a side.
-    pub(crate) fn fits_i32(&self) -> bool {
-        self.reach < 1 << 29
+        let d = |c: i32, o: i32| {
+            let d = i64::from(c) - i64::from(o);
+            (d.unsigned_abs() < T::COORD_BOUND)
+                .then_some(d)
+                .and_then(T::narrow)
+        };
+        Some((d(x, self.centre.0)?, d(y, self.centre.1)?))
     }
 }

@@ -21,14 +21,16 @@ pub(crate) trait Wide:
     + Neg<Output = Self>
     + Shr<u32, Output = Self>
 {
+    /// Coordinates relative to a frame (see
+    /// [`Frame`](super::frame::Frame)) below this magnitude let edges step
+    /// exactly in this width: `2^29` for `i32`, anything for `i64`.
+    const COORD_BOUND: u64;
     /// 0.
     const ZERO: Self;
     /// 1.
     const ONE: Self;
     /// `v` in this width, if it fits.
     fn narrow(v: i64) -> Option<Self>;
-    /// `v` in this width, if it fits.
-    fn narrow_from_i128(v: i128) -> Option<Self>;
     /// The value as `i64`, if it fits.
     fn to_i64(self) -> Option<i64>;
     /// The value as `i32`, if it fits.
@@ -39,16 +41,13 @@ pub(crate) trait Wide:
 }
 
 macro_rules! impl_wide {
-    ($t:ty) => {
+    ($t:ty, $bound:expr) => {
         impl Wide for $t {
+            const COORD_BOUND: u64 = $bound;
             const ZERO: Self = 0;
             const ONE: Self = 1;
             #[inline]
             fn narrow(v: i64) -> Option<Self> {
-                <$t>::try_from(v).ok()
-            }
-            #[inline]
-            fn narrow_from_i128(v: i128) -> Option<Self> {
                 <$t>::try_from(v).ok()
             }
             #[inline]
@@ -69,58 +68,74 @@ macro_rules! impl_wide {
     };
 }
 
-impl_wide!(i32);
-impl_wide!(i64);
-impl_wide!(i128);
+impl_wide!(i32, 1 << 29);
+impl_wide!(i64, u64::MAX);
+impl_wide!(i128, u64::MAX);
 
-/// `floor(n / d)` and the remainder in `0..d`, for `d > 0`, in 32 bits when
-/// both operands fit (one hardware division on a 32-bit core) and in 64
-/// bits otherwise. `None` for `d <= 0`.
-#[inline]
-pub(crate) fn div_rem_floor(n: i64, d: i64) -> Option<(i64, i64)> {
-    match (i32::try_from(n), i32::try_from(d)) {
-        (Ok(n), Ok(d)) => n
-            .div_rem_floor(d)
-            .map(|(q, r)| (i64::from(q), i64::from(r))),
-        _ => n.div_rem_floor(d),
+/// A [`Wide`] with a type twice as wide, which holds the product of any
+/// two of its values: `i32` (products in `i64`) and `i64` (in `i128`).
+pub(crate) trait Narrow: Wide {
+    /// The double width.
+    type Double: Wide + From<Self>;
+    /// `v` in this width, if it fits.
+    fn from_double(v: Self::Double) -> Option<Self>;
+}
+
+impl Narrow for i32 {
+    type Double = i64;
+    #[inline]
+    fn from_double(v: i64) -> Option<Self> {
+        i32::try_from(v).ok()
     }
 }
 
-/// `n1 * n2` divided by `d > 0`, rounded up, and the remainder
-/// `ceil(n1 n2 / d) d - n1 n2` (in `0..d`): in 32 or 64 bits when the
-/// product fits `i64`, in `i128` otherwise. `None` if `d <= 0` or the
-/// quotient does not fit `i64`.
-pub(crate) fn mul_div_ceil(n1: i64, n2: i64, d: i64) -> Option<(i64, i64)> {
-    match n1.checked_mul(n2).and_then(i64::checked_neg) {
-        // ceil(n / d) = -floor(-n / d), and the remainder of -n is c d - n.
-        Some(minus_n) => div_rem_floor(minus_n, d).map(|(f, r)| (-f, r)),
+impl Narrow for i64 {
+    type Double = i128;
+    #[inline]
+    fn from_double(v: i128) -> Option<Self> {
+        i64::try_from(v).ok()
+    }
+}
+
+/// `floor(n / d)` and the remainder in `0..d`, for `d > 0`, with `n` of
+/// double width: divided in `T` when `n` fits (one hardware division on
+/// a 32-bit core for `T = i32`), in the double width otherwise. `None` if
+/// `d <= 0` or the quotient does not fit `T`.
+#[inline]
+pub(crate) fn div_rem_double<T: Narrow>(n: T::Double, d: T) -> Option<(T, T)> {
+    match T::from_double(n) {
+        Some(n) => n.div_rem_floor(d),
         None => {
-            let minus_n = -(i128::from(n1) * i128::from(n2));
-            let (f, r) = minus_n.div_rem_floor(i128::from(d))?;
-            Some((i64::narrow_from_i128(-f)?, i64::narrow_from_i128(r)?))
+            let (q, r) = n.div_rem_floor(d.into())?;
+            Some((T::from_double(q)?, T::from_double(r)?))
         }
     }
 }
 
+/// `ceil(a b / d)` for `d > 0`, and the remainder `ceil(a b / d) d - a b`
+/// (in `0..d`). The product is exact in the double width; the division
+/// runs as [`div_rem_double`]. `None` if `d <= 0` or the quotient does not
+/// fit `T`.
+#[inline]
+pub(crate) fn mul_div_ceil<T: Narrow>(a: T, b: T, d: T) -> Option<(T, T)> {
+    // |a|, |b| <= 2^(k-1) for k-bit T: the product and its negation fit 2k bits.
+    let minus_n = -(T::Double::from(a) * T::Double::from(b));
+    // ceil(n / d) = -floor(-n / d), and the remainder of -n is c d - n.
+    let (f, r) = div_rem_double::<T>(minus_n, d)?;
+    Some((-f, r))
+}
+
 /// The doubled signed area of `a, b, c` (raw 20.12 units): positive when
-/// `a -> b -> c` turns clockwise on screen (y down). Exact for any
-/// coordinates in `i32`: differences reach `2^32` and their products
-/// `2^64`, so it is computed in `i64` when every difference fits 31 bits
-/// (products below `2^62`) and in `i128` otherwise.
-pub(crate) fn orientation(a: (i32, i32), b: (i32, i32), c: (i32, i32)) -> i128 {
-    let d = |p: (i32, i32), o: (i32, i32)| {
-        (
-            i64::from(p.0) - i64::from(o.0),
-            i64::from(p.1) - i64::from(o.1),
-        )
-    };
-    let (u, v) = (d(b, a), d(c, a));
-    let small = |x: i64| x.unsigned_abs() < 1 << 31;
-    if small(u.0) && small(u.1) && small(v.0) && small(v.1) {
-        i128::from(u.0 * v.1 - u.1 * v.0)
-    } else {
-        i128::from(u.0) * i128::from(v.1) - i128::from(u.1) * i128::from(v.0)
-    }
+/// `a -> b -> c` turns clockwise on screen (y down). Exact in the double
+/// width when every coordinate difference fits `T` (`|coordinate| <
+/// 2^(k-2)` for `k`-bit `T` suffices): each product then has at most
+/// `2k - 2` bits and their difference `2k - 1`.
+#[inline]
+pub(crate) fn orientation<T: Narrow>(a: (T, T), b: (T, T), c: (T, T)) -> T::Double {
+    let d = |v: T| T::Double::from(v);
+    let (ux, uy) = (d(b.0) - d(a.0), d(b.1) - d(a.1));
+    let (vx, vy) = (d(c.0) - d(a.0), d(c.1) - d(a.1));
+    ux * vy - uy * vx
 }
 
 #[cfg(test)]
@@ -129,9 +144,13 @@ mod tests {
 
     #[test]
     fn floor_division_of_negatives() {
-        assert_eq!(div_rem_floor(-7, 2), Some((-4, 1)));
-        assert_eq!(div_rem_floor(i64::MIN, 3), Some((-3074457345618258603, 1)));
-        assert_eq!(div_rem_floor(5, 0), None);
+        assert_eq!(div_rem_double::<i32>(-7, 2), Some((-4, 1)));
+        assert_eq!(div_rem_double::<i32>(-(1i64 << 40), 3), None);
+        assert_eq!(
+            div_rem_double::<i32>(1i64 << 40, 1 << 20),
+            Some((1 << 20, 0))
+        );
+        assert_eq!(div_rem_double::<i64>(5, 0), None);
     }
 
     #[test]
@@ -139,19 +158,21 @@ mod tests {
         // (2^40)(2^40) / (2^33 + 1), rounded up, checked against u128.
         let (n, d) = (1i64 << 40, (1i64 << 33) + 1);
         let exact = (1u128 << 80).div_ceil(d as u128);
-        let (c, r) = mul_div_ceil(n, n, d).unwrap();
+        let (c, r) = mul_div_ceil::<i64>(n, n, d).unwrap();
         assert_eq!(c as u128, exact);
         assert_eq!(r as u128, exact * d as u128 - (1u128 << 80));
-        assert_eq!(mul_div_ceil(-3, 5, 4), Some((-3, 3)));
+        assert_eq!(mul_div_ceil::<i32>(-3, 5, 4), Some((-3, 3)));
+        // 2^29 * 2^29 / 3 in i64, the quotient beyond i32.
+        assert_eq!(mul_div_ceil::<i32>(1 << 29, 1 << 29, 3), None);
     }
 
     #[test]
     fn orientation_at_the_extremes() {
-        let (lo, hi) = (i32::MIN, i32::MAX);
-        // Counter-clockwise on screen: negative; the magnitude needs 65 bits.
-        let area = orientation((lo, lo), (lo, hi), (hi, lo));
-        assert_eq!(area, -((1i128 << 32) - 1) * ((1i128 << 32) - 1));
-        assert_eq!(orientation((0, 0), (4, 0), (0, 4)), 16);
-        assert_eq!(orientation((0, 0), (1, 1), (2, 2)), 0);
+        let (lo, hi) = (-(1i64 << 33), 1i64 << 33);
+        // Counter-clockwise on screen: negative; the magnitude needs 69 bits.
+        let area = orientation::<i64>((lo, lo), (lo, hi), (hi, lo));
+        assert_eq!(area, -(1i128 << 68));
+        assert_eq!(orientation::<i32>((0, 0), (4, 0), (0, 4)), 16);
+        assert_eq!(orientation::<i32>((0, 0), (1, 1), (2, 2)), 0);
     }
 }

@@ -10,15 +10,22 @@
 //! sampling rule. Each edge steps in O(1) per row; nothing is searched,
 //! and nothing per pixel is done here at all: the sink fills the span.
 //!
-//! Widths: the frame tells whether the triangle's own bounds allow `i32`
-//! stepping (bounding box under 131,070 px a side, [`Frame::fits_i32`]);
-//! otherwise edges step in `i64`, which is exact over the whole 20.12
-//! range. A triangle outside the clip costs one bounding-box test.
+//! Widths: the whole setup and the stepping run in `i32` when the
+//! vertices lie within `2^29` raw units (131,072 px) of the frame's
+//! origin, which holds for every triangle whose bounding box is under
+//! 131,070 px a side; products are taken in `i64` and divided in 32 bits
+//! when they fit. Otherwise everything runs in `i64` (products in `i128`),
+//! exact over the whole 20.12 range. A triangle outside the clip costs one
+//! bounding-box test.
 
 use embedded_graphics_core::primitives::Rectangle;
 
 use crate::{
-    raster::{edge::Edge, frame::Frame, wide::orientation, wide::Wide},
+    raster::{
+        edge::Edge,
+        frame::Frame,
+        wide::{orientation, Narrow, Wide},
+    },
     span::Span,
     vertex::Vertex,
 };
@@ -35,16 +42,24 @@ pub(crate) fn triangle_spans<E>(
     };
     let mut v = *vertices;
     sort_by_y(&mut v);
-    let turn = orientation(v[0].raw(), v[1].raw(), v[2].raw());
-    if turn == 0 {
-        return Ok(());
+    match relative::<i32>(&frame, &v) {
+        Some(p) => walk(&frame, p, &mut emit),
+        None => match relative::<i64>(&frame, &v) {
+            Some(p) => walk(&frame, p, &mut emit),
+            // Unreachable: every coordinate fits i64.
+            None => Ok(()),
+        },
     }
-    let p = v.map(|v| frame.relative(v));
-    if frame.fits_i32() {
-        walk::<i32, E>(&frame, p, turn < 0, &mut emit)
-    } else {
-        walk::<i64, E>(&frame, p, turn < 0, &mut emit)
-    }
+}
+
+/// The vertices relative to the frame, in `T` if they fit its bound.
+#[inline(always)]
+fn relative<T: Wide>(frame: &Frame, v: &[Vertex; 3]) -> Option<[(T, T); 3]> {
+    Some([
+        frame.relative(v[0])?,
+        frame.relative(v[1])?,
+        frame.relative(v[2])?,
+    ])
 }
 
 /// Sorts three vertices by `y`.
@@ -64,12 +79,17 @@ fn sort_by_y(v: &mut [Vertex; 3]) {
 /// Walks the rows of the frame the triangle `p` (relative, sorted by `y`)
 /// crosses.
 #[inline(always)]
-fn walk<T: Wide, E>(
+fn walk<T: Narrow, E>(
     frame: &Frame,
-    p: [(i64, i64); 3],
-    short_left: bool,
+    p: [(T, T); 3],
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
+    // Coordinates below COORD_BOUND: the orientation is exact.
+    let turn = orientation(p[0], p[1], p[2]);
+    if turn == T::Double::ZERO {
+        return Ok(());
+    }
+    let short_left = turn < T::Double::ZERO;
     let last = frame.height - 1;
     let Some(mut long) = Edge::<T>::new(p[0], p[2], 0) else {
         return Ok(());
@@ -93,7 +113,7 @@ fn walk<T: Wide, E>(
 /// `short`, both positioned on that first row; leaves both on `end` (never
 /// steps past it, so values stay within the edges' bounds).
 #[inline(always)]
-fn walk_pair<T: Wide, E>(
+fn walk_pair<T: Narrow, E>(
     frame: &Frame,
     long: &mut Edge<T>,
     short: &mut Edge<T>,
