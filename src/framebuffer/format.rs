@@ -281,8 +281,7 @@ fn fill_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
         for px in head.chunks_exact_mut(B) {
             px.copy_from_slice(&pixel);
         }
-        let word = u32::from_ne_bytes([at(0), at(1), at(2), at(3)]);
-        words.fill(word);
+        fill_u32(words, u32::from_ne_bytes([at(0), at(1), at(2), at(3)]));
         // The tail is whole pixels too: the span and the head are.
         for px in tail.chunks_exact_mut(B) {
             px.copy_from_slice(&pixel);
@@ -310,6 +309,19 @@ fn fill_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     for (i, b) in tail.iter_mut().enumerate() {
         *b = at(offset + i);
     }
+}
+
+/// `words.fill(word)`, 8 words (32 bytes) a step: on a Cortex-M4 each
+/// step is a few multi-register stores (`strd`/`stm`) and one loop test,
+/// about 0.4 instructions per 2-byte pixel, where a plain `fill` is
+/// unrolled only 4 times.
+#[inline(always)]
+fn fill_u32(words: &mut [u32], word: u32) {
+    let mut blocks = words.chunks_exact_mut(8);
+    for block in &mut blocks {
+        block.copy_from_slice(&[word; 8]);
+    }
+    blocks.into_remainder().fill(word);
 }
 
 /// [`PixelFormat::write_span`] for `B`-byte pixels.

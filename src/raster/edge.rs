@@ -75,7 +75,7 @@ pub(crate) struct Edge<T> {
 
 impl<T: Narrow> Edge<T> {
     /// The edge from `top` to `bottom` (relative raw units below
-    /// [`Wide::COORD_BOUND`], `top.1 < bottom.1`), started on its first
+    /// [`Wide::difference`], `top.1 < bottom.1`), started on its first
     /// row at or below row `from_row`. `None` if it crosses no row from
     /// there.
     #[inline(always)]

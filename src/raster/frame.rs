@@ -18,6 +18,8 @@ pub(crate) struct Frame {
     pub height: i32,
     /// Raw coordinates of the origin's centre.
     centre: (i32, i32),
+    /// Whether every vertex lies within `2^29` raw units of the centre.
+    near: bool,
 }
 
 /// The first pixel whose centre `4096 i + 2048` is at or right of `raw`:
@@ -57,26 +59,29 @@ impl Frame {
         }
         // |x0|, |y0| <= 2^19, so the centres lie within +-(2^31 - 2048).
         let centre = |p: i32| p.checked_mul(4096)?.checked_add(2048);
+        let centre = (centre(x0)?, centre(y0)?);
+        // The origin's centre lies in the box [lo, hi] (x0 and y0 are
+        // candidates: clipping only moves them inwards), so every vertex
+        // lies within the box's extent of it.
+        let small = |lo: i32, hi: i32| hi.checked_sub(lo).is_some_and(|e| e < 1 << 29);
         Some(Self {
             origin: Point::new(x0, y0),
             width: x1 - x0,
             height: y1 - y0,
-            centre: (centre(x0)?, centre(y0)?),
+            centre,
+            near: small(lo.0, hi.0) && small(lo.1, hi.1),
         })
     }
 
     /// `v` in raw units from the origin's centre, in `T` if both
-    /// coordinates are below [`Wide::COORD_BOUND`] (always for `i64`:
-    /// `|x|, |y| < 2^32`).
+    /// coordinates lie within its bound for exact stepping
+    /// ([`Wide::difference`]; always for `i64`: `|x|, |y| < 2^32`).
     #[inline(always)]
     pub(crate) fn relative<T: Wide>(&self, v: Vertex) -> Option<(T, T)> {
         let (x, y) = v.raw();
-        let d = |c: i32, o: i32| {
-            let d = i64::from(c) - i64::from(o);
-            (d.unsigned_abs() < T::COORD_BOUND)
-                .then_some(d)
-                .and_then(T::narrow)
-        };
-        Some((d(x, self.centre.0)?, d(y, self.centre.1)?))
+        Some((
+            T::difference(x, self.centre.0, self.near)?,
+            T::difference(y, self.centre.1, self.near)?,
+        ))
     }
 }

@@ -21,10 +21,12 @@ pub(crate) trait Wide:
     + Neg<Output = Self>
     + Shr<u32, Output = Self>
 {
-    /// Coordinates relative to a frame (see
-    /// [`Frame`](super::frame::Frame)) below this magnitude let edges step
-    /// exactly in this width: `2^29` for `i32`, anything for `i64`.
-    const COORD_BOUND: u64;
+    /// `a - b` in this width, for coordinates relative to a frame (see
+    /// [`Frame`](super::frame::Frame)). `within_2_29` tells that the
+    /// caller has shown `|a - b| < 2^29`, the bound under which edges step
+    /// exactly in `i32`; without it, `i32` gives `None`. Wider types
+    /// always hold the difference.
+    fn difference(a: i32, b: i32, within_2_29: bool) -> Option<Self>;
     /// 0.
     const ZERO: Self;
     /// 1.
@@ -41,9 +43,12 @@ pub(crate) trait Wide:
 }
 
 macro_rules! impl_wide {
-    ($t:ty, $bound:expr) => {
+    ($t:ty, $difference:expr) => {
         impl Wide for $t {
-            const COORD_BOUND: u64 = $bound;
+            #[inline(always)]
+            fn difference(a: i32, b: i32, within_2_29: bool) -> Option<Self> {
+                $difference(a, b, within_2_29)
+            }
             const ZERO: Self = 0;
             const ONE: Self = 1;
             #[inline]
@@ -68,9 +73,12 @@ macro_rules! impl_wide {
     };
 }
 
-impl_wide!(i32, 1 << 29);
-impl_wide!(i64, u64::MAX);
-impl_wide!(i128, u64::MAX);
+// With `within_2_29`, `a - b` does not overflow `i32`.
+impl_wide!(i32, |a: i32, b: i32, within: bool| within.then(|| a - b));
+impl_wide!(i64, |a: i32, b: i32, _| Some(i64::from(a) - i64::from(b)));
+impl_wide!(i128, |a: i32, b: i32, _| Some(
+    i128::from(a) - i128::from(b)
+));
 
 /// A [`Wide`] with a type twice as wide, which holds the product of any
 /// two of its values: `i32` (products in `i64`) and `i64` (in `i128`).
@@ -101,7 +109,7 @@ impl Narrow for i64 {
 /// double width: divided in `T` when `n` fits (one hardware division on
 /// a 32-bit core for `T = i32`), in the double width otherwise. `None` if
 /// `d <= 0` or the quotient does not fit `T`.
-#[inline]
+#[inline(always)]
 pub(crate) fn div_rem_double<T: Narrow>(n: T::Double, d: T) -> Option<(T, T)> {
     match T::from_double(n) {
         Some(n) => n.div_rem_floor(d),
@@ -116,7 +124,7 @@ pub(crate) fn div_rem_double<T: Narrow>(n: T::Double, d: T) -> Option<(T, T)> {
 /// (in `0..d`). The product is exact in the double width; the division
 /// runs as [`div_rem_double`]. `None` if `d <= 0` or the quotient does not
 /// fit `T`.
-#[inline]
+#[inline(always)]
 pub(crate) fn mul_div_ceil<T: Narrow>(a: T, b: T, d: T) -> Option<(T, T)> {
     // |a|, |b| <= 2^(k-1) for k-bit T: the product and its negation fit 2k bits.
     let minus_n = -(T::Double::from(a) * T::Double::from(b));
@@ -127,14 +135,14 @@ pub(crate) fn mul_div_ceil<T: Narrow>(a: T, b: T, d: T) -> Option<(T, T)> {
 
 /// The doubled signed area of `a, b, c` (raw 20.12 units): positive when
 /// `a -> b -> c` turns clockwise on screen (y down). Exact in the double
-/// width when every coordinate difference fits `T` (`|coordinate| <
-/// 2^(k-2)` for `k`-bit `T` suffices): each product then has at most
-/// `2k - 2` bits and their difference `2k - 1`.
+/// width when every coordinate is below `2^(k-2)` in magnitude for `k`-bit
+/// `T`: the differences then fit `T`, each product has at most `2k - 2`
+/// bits and their difference `2k - 1`.
 #[inline]
 pub(crate) fn orientation<T: Narrow>(a: (T, T), b: (T, T), c: (T, T)) -> T::Double {
     let d = |v: T| T::Double::from(v);
-    let (ux, uy) = (d(b.0) - d(a.0), d(b.1) - d(a.1));
-    let (vx, vy) = (d(c.0) - d(a.0), d(c.1) - d(a.1));
+    let (ux, uy) = (d(b.0 - a.0), d(b.1 - a.1));
+    let (vx, vy) = (d(c.0 - a.0), d(c.1 - a.1));
     ux * vy - uy * vx
 }
 
@@ -172,6 +180,9 @@ mod tests {
         // Counter-clockwise on screen: negative; the magnitude needs 69 bits.
         let area = orientation::<i64>((lo, lo), (lo, hi), (hi, lo));
         assert_eq!(area, -(1i128 << 68));
+        let (lo, hi) = (-(1i32 << 29) + 1, (1i32 << 29) - 1);
+        let area = orientation::<i32>((lo, lo), (lo, hi), (hi, lo));
+        assert_eq!(area, -(i64::from(hi - lo) * i64::from(hi - lo)));
         assert_eq!(orientation::<i32>((0, 0), (4, 0), (0, 4)), 16);
         assert_eq!(orientation::<i32>((0, 0), (1, 1), (2, 2)), 0);
     }

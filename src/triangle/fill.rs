@@ -89,14 +89,28 @@ fn walk<T: Narrow, E>(
     if turn == T::Double::ZERO {
         return Ok(());
     }
-    let short_left = turn < T::Double::ZERO;
+    if turn < T::Double::ZERO {
+        walk_sides::<T, E, true>(frame, p, emit)
+    } else {
+        walk_sides::<T, E, false>(frame, p, emit)
+    }
+}
+
+/// [`walk`] once the side of the short edges is known (left if
+/// `SHORT_LEFT`), so that the row loop has no choice left to make.
+#[inline(always)]
+fn walk_sides<T: Narrow, E, const SHORT_LEFT: bool>(
+    frame: &Frame,
+    p: [(T, T); 3],
+    emit: &mut impl FnMut(Span) -> Result<(), E>,
+) -> Result<(), E> {
     let last = frame.height - 1;
     let Some(mut long) = Edge::<T>::new(p[0], p[2], 0) else {
         return Ok(());
     };
     if let Some(mut upper) = Edge::<T>::new(p[0], p[1], 0) {
         let end = upper.last_row.min(last);
-        walk_pair(frame, &mut long, &mut upper, short_left, end, emit)?;
+        walk_pair::<T, E, SHORT_LEFT>(frame, &mut long, &mut upper, end, emit)?;
         if end == last {
             return Ok(());
         }
@@ -104,7 +118,7 @@ fn walk<T: Narrow, E>(
     }
     if let Some(mut lower) = Edge::<T>::new(p[1], p[2], 0) {
         let end = lower.last_row.min(last);
-        walk_pair(frame, &mut long, &mut lower, short_left, end, emit)?;
+        walk_pair::<T, E, SHORT_LEFT>(frame, &mut long, &mut lower, end, emit)?;
     }
     Ok(())
 }
@@ -113,16 +127,15 @@ fn walk<T: Narrow, E>(
 /// `short`, both positioned on that first row; leaves both on `end` (never
 /// steps past it, so values stay within the edges' bounds).
 #[inline(always)]
-fn walk_pair<T: Narrow, E>(
+fn walk_pair<T: Narrow, E, const SHORT_LEFT: bool>(
     frame: &Frame,
     long: &mut Edge<T>,
     short: &mut Edge<T>,
-    short_left: bool,
     end: i32,
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
     let mut row = short.first_row;
-    let (left, right) = if short_left {
+    let (left, right) = if SHORT_LEFT {
         (short, long)
     } else {
         (long, short)
