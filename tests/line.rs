@@ -536,3 +536,38 @@ fn variant_accuracy() {
         "see LineAlgorithm's docs"
     );
 }
+
+proptest! {
+    /// The crate's framebuffer walks steep lines through its bytes and
+    /// writes shallow ones as runs (`SpanSink::fill_line`): both light
+    /// exactly the reference's pixels, and `Line::pixels` lists them.
+    #[test]
+    fn framebuffer_lines_match_the_reference(
+        scale in 2u32..=31,
+        c in prop::array::uniform4(any::<i64>()),
+    ) {
+        use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, SpanDrawable};
+        let r = 1i64 << scale;
+        let at = |k: usize| (c[k].rem_euclid(2 * r + 1) - r + 16).clamp(MIN, MAX);
+        let line = Line::new(p(at(0), at(1)), p(at(2), at(3)));
+        let win = Window { x0: 0, y0: 0, w: 32, h: 24 };
+        let mut fb = Framebuffer::<Gray8Bytes, 32, 24, { buffer_size::<Gray8Bytes>(32, 24) }>::new();
+        line.stroke(Gray8::WHITE).draw_spans(&mut fb).unwrap();
+        let lit: Vec<(i64, i64)> = (0..24)
+            .flat_map(|y| (0..32).map(move |x| (x, y)))
+            .filter(|&(x, y)| fb.pixel(Point::new(x as i32, y as i32)) == Some(Gray8::WHITE))
+            .collect();
+        let mut want = reference(line.start, line.end, win);
+        want.sort_by_key(|&(x, y)| (y, x));
+        prop_assert_eq!(&lit, &want, "{:?}", line);
+        let listed: Vec<(i64, i64)> = line
+            .pixels(&win.rect())
+            .into_iter()
+            .flatten()
+            .map(|q| (i64::from(q.x), i64::from(q.y)))
+            .collect();
+        let mut listed_sorted = listed.clone();
+        listed_sorted.sort_by_key(|&(x, y)| (y, x));
+        prop_assert_eq!(listed_sorted, want);
+    }
+}

@@ -2,6 +2,8 @@
 
 use core::ops::Range;
 
+use crate::line::LinePixels;
+
 use embedded_graphics_core::pixelcolor::{
     raw::RawU16, BinaryColor, Gray8, GrayColor, IntoStorage, PixelColor, Rgb565, Rgb888, RgbColor,
 };
@@ -138,6 +140,75 @@ pub trait PixelFormat {
     fn write_pixel(row: &mut [u8], x: usize, color: Self::Color) {
         Self::fill_span(row, x..x.saturating_add(1), color);
     }
+
+    /// Sets the pixels of a 1-pixel line in `buffer`, whose rows are
+    /// `stride` bytes apart; pixels outside `buffer` are ignored.
+    ///
+    /// The provided implementation calls [`write_pixel`](Self::write_pixel)
+    /// per pixel; the built-in byte formats walk the line through the
+    /// buffer instead, one byte offset step per pixel.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::{Point, Size}, pixelcolor::Gray8, primitives::Rectangle};
+    /// use embedded_raster::{framebuffer::{Gray8Bytes, PixelFormat}, Line};
+    ///
+    /// let mut buffer = [0u8; 12]; // 4 x 3
+    /// let clip = Rectangle::new(Point::zero(), Size::new(4, 3));
+    /// let pixels = Line::new(Point::new(0, 0), Point::new(3, 2)).pixels(&clip).unwrap();
+    /// Gray8Bytes::fill_line(&mut buffer, 4, pixels, Gray8::new(7));
+    /// assert_eq!(buffer, [7, 0, 0, 0, 0, 7, 7, 0, 0, 0, 0, 7]);
+    /// ```
+    fn fill_line(buffer: &mut [u8], stride: usize, pixels: LinePixels, color: Self::Color) {
+        for p in pixels {
+            if let (Ok(x), Ok(y)) = (usize::try_from(p.x), usize::try_from(p.y)) {
+                let row = y
+                    .checked_mul(stride)
+                    .and_then(|start| buffer.get_mut(start..start.checked_add(stride)?));
+                if let Some(row) = row {
+                    Self::write_pixel(row, x, color);
+                }
+            }
+        }
+    }
+}
+
+/// [`PixelFormat::fill_line`] for `B`-byte pixels: the byte offset of the
+/// first pixel, then per pixel one step along the major axis, plus one
+/// along the minor axis where the line moves (rows are `stride` bytes
+/// apart). An offset that would leave `0..=usize::MAX` stops the walk;
+/// each write is bounds-checked.
+#[inline(always)]
+fn walk_line<const B: usize>(buffer: &mut [u8], stride: usize, pixels: &LinePixels, px: [u8; B]) {
+    let first = pixels.first();
+    let (Ok(x), Ok(y), Ok(stride_step)) = (
+        usize::try_from(first.x),
+        usize::try_from(first.y),
+        isize::try_from(stride),
+    ) else {
+        return;
+    };
+    let mut at = y
+        .checked_mul(stride)
+        .and_then(|row| row.checked_add(x.checked_mul(B)?));
+    let minor = pixels.minor_step() as isize;
+    let (major, minor) = if pixels.x_major() {
+        (B as isize, minor * stride_step)
+    } else {
+        (stride_step, minor * B as isize)
+    };
+    let mut put = |at: Option<usize>| {
+        if let Some(dst) = at.and_then(|a| buffer.get_mut(a..a.checked_add(B)?)) {
+            dst.copy_from_slice(&px);
+        }
+    };
+    put(at);
+    pixels.walk(|moves| {
+        let step = if moves { major + minor } else { major };
+        at = at.and_then(|a| a.checked_add_signed(step));
+        put(at);
+    });
 }
 
 /// Rgb565 in two bytes per pixel, low byte first (`u16::to_le_bytes`).
@@ -382,6 +453,10 @@ macro_rules! byte_format {
                         *dst = src;
                     }
                 }
+            }
+
+            fn fill_line(buffer: &mut [u8], stride: usize, pixels: LinePixels, color: $color) {
+                walk_line(buffer, stride, &pixels, $encode(color));
             }
         }
     };

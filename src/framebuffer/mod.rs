@@ -91,6 +91,7 @@ use embedded_graphics_core::{
 
 use crate::{
     clip::{clip_to, row_major_skips},
+    line::{fill_run, LinePixels},
     raster::sink::SpanSink,
     span::Span,
 };
@@ -460,6 +461,17 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
 
     fn fill_rect(&mut self, area: &Rectangle, color: F::Color) -> Result<(), Infallible> {
         self.fill_solid(area, color)
+    }
+
+    /// Lines whose runs are long (under one minor step per four pixels)
+    /// go as runs; steeper ones are walked pixel by pixel through the
+    /// bytes ([`PixelFormat::fill_line`]).
+    fn fill_line(&mut self, pixels: LinePixels, color: F::Color) -> Result<(), Infallible> {
+        if pixels.has_long_runs() {
+            return pixels.for_each_run(|run| fill_run(self, run, color));
+        }
+        F::fill_line(&mut self.data.0, Self::STRIDE, pixels, color);
+        Ok(())
     }
 }
 

@@ -13,6 +13,7 @@ use super::{
     Run,
 };
 use crate::raster::wide::Wide;
+use embedded_graphics_core::geometry::Point;
 
 /// Calls `emit` with the runs of the visible part `v` of `c`, in order of
 /// growing major coordinate.
@@ -59,5 +60,200 @@ fn step<T: Wide, const X_MAJOR: bool, E>(
         }
         d = d + two_minor;
         major += 1;
+    }
+}
+
+/// The pixels a 1-pixel [`Line`](super::Line) lights inside a sink's
+/// bounds, in order of growing major coordinate: what
+/// [`SpanSink::fill_line`](crate::SpanSink::fill_line) receives.
+///
+/// It iterates over the pixels as [`Point`]s and, with
+/// [`for_each_run`](Self::for_each_run), over the same pixels as
+/// [`Run`]s. A sink that knows its memory (the crate's
+/// [`Framebuffer`](crate::Framebuffer)) walks the pixels itself, one add
+/// and one compare of the Bresenham decision per pixel.
+///
+/// # Examples
+///
+/// ```
+/// use core::convert::Infallible;
+/// use embedded_graphics_core::{geometry::{Point, Size}, pixelcolor::BinaryColor, primitives::Rectangle};
+/// use embedded_raster::{line::LinePixels, Line, Span, SpanDrawable, SpanSink};
+///
+/// /// Records the pixels of the lines drawn into it.
+/// struct Pixels(Vec<Point>);
+///
+/// impl SpanSink<BinaryColor> for Pixels {
+///     type Error = Infallible;
+///     fn bounds(&self) -> Rectangle {
+///         Rectangle::new(Point::zero(), Size::new(8, 8))
+///     }
+///     fn fill_span(&mut self, _: Span, _: BinaryColor) -> Result<(), Infallible> {
+///         Ok(())
+///     }
+///     fn fill_line(&mut self, pixels: LinePixels, _: BinaryColor) -> Result<(), Infallible> {
+///         self.0.extend(pixels);
+///         Ok(())
+///     }
+/// }
+///
+/// let mut sink = Pixels(Vec::new());
+/// Line::new(Point::new(0, 0), Point::new(4, 2)).stroke(BinaryColor::On).draw_spans(&mut sink)?;
+/// let want = [(0, 0), (1, 0), (2, 1), (3, 1), (4, 2)].map(|(x, y)| Point::new(x, y));
+/// assert_eq!(sink.0, want);
+/// # Ok::<(), Infallible>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LinePixels {
+    pub(crate) c: Canonical,
+    pub(crate) v: Visible,
+}
+
+impl LinePixels {
+    /// The number of pixels.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_raster::Line;
+    ///
+    /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
+    /// let pixels = Line::new(Point::new(-5, 1), Point::new(20, 3)).pixels(&clip).unwrap();
+    /// assert_eq!(pixels.len(), 8);
+    /// ```
+    pub fn len(&self) -> u32 {
+        self.v
+            .last_major
+            .abs_diff(self.v.first_major)
+            .saturating_add(1)
+    }
+
+    /// Always `false`: an empty line has no `LinePixels`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_raster::Line;
+    ///
+    /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
+    /// assert!(!Line::new(Point::zero(), Point::zero()).pixels(&clip).unwrap().is_empty());
+    /// ```
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// Calls `f` with the same pixels as horizontal runs (an x-major line)
+    /// or vertical runs (a y-major one), in order, stopping at the first
+    /// error.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use core::convert::Infallible;
+    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_raster::Line;
+    ///
+    /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
+    /// let pixels = Line::new(Point::new(0, 0), Point::new(4, 2)).pixels(&clip).unwrap();
+    /// let mut lens = Vec::new();
+    /// pixels.for_each_run(|r| {
+    ///     lens.push(r.len);
+    ///     Ok::<(), Infallible>(())
+    /// })?;
+    /// assert_eq!(lens, [2, 2, 1]);
+    /// # Ok::<(), Infallible>(())
+    /// ```
+    pub fn for_each_run<E>(&self, mut f: impl FnMut(Run) -> Result<(), E>) -> Result<(), E> {
+        runs(&self.c, &self.v, &mut f)
+    }
+
+    /// Whether the line moves along its minor axis less than once per four
+    /// pixels, so that its runs are long.
+    pub(crate) fn has_long_runs(&self) -> bool {
+        self.c.dminor.saturating_mul(4) < self.c.dmajor
+    }
+
+    /// Whether the line is x-major (one pixel per column).
+    pub(crate) fn x_major(&self) -> bool {
+        self.c.x_major
+    }
+
+    /// Calls `step(minor_moves)` once per pixel after the first (at
+    /// [`first`](Self::first)), telling whether the minor coordinate moves
+    /// there: the walk in the narrowest width that holds the decision
+    /// variable, for sinks that keep their own position.
+    #[inline(always)]
+    pub(crate) fn walk(&self, mut step: impl FnMut(bool)) {
+        if self.c.dmajor < 1 << 30 {
+            self.walk_in::<i32>(&mut step);
+        } else {
+            self.walk_in::<i64>(&mut step);
+        }
+    }
+
+    #[inline(always)]
+    fn walk_in<T: Wide>(&self, step: &mut impl FnMut(bool)) {
+        // Within [-2 dmajor, 2 dmajor]: `walk` picks a width that holds them.
+        let (Some(two_minor), Some(two_major), Some(mut d)) = (
+            T::narrow(2 * self.c.dminor),
+            T::narrow(2 * self.c.dmajor),
+            T::narrow(self.v.decision),
+        ) else {
+            return;
+        };
+        for _ in 1..self.len() {
+            let moves = d >= T::ZERO;
+            if moves {
+                d = d - two_major;
+            }
+            d = d + two_minor;
+            step(moves);
+        }
+    }
+
+    /// The first pixel.
+    pub(crate) fn first(&self) -> Point {
+        if self.c.x_major {
+            Point::new(self.v.first_major, self.v.first_minor)
+        } else {
+            Point::new(self.v.first_minor, self.v.first_major)
+        }
+    }
+
+    /// +1 or -1: how the minor coordinate moves.
+    pub(crate) fn minor_step(&self) -> i32 {
+        if self.c.minor_step > 0 {
+            1
+        } else {
+            -1
+        }
+    }
+}
+
+/// The pixels one by one.
+impl Iterator for LinePixels {
+    type Item = Point;
+
+    fn next(&mut self) -> Option<Point> {
+        if self.v.first_major > self.v.last_major {
+            return None;
+        }
+        let p = self.first();
+        if self.v.first_major < self.v.last_major {
+            let d = self.v.decision;
+            let moves = d >= 0;
+            // |d| <= 2 dmajor < 2^33 throughout.
+            self.v.decision = d + 2 * self.c.dminor - if moves { 2 * self.c.dmajor } else { 0 };
+            if moves {
+                self.v.first_minor += self.minor_step();
+            }
+            self.v.first_major += 1;
+        } else {
+            // Past the end, without stepping beyond i32.
+            self.v.last_major -= 1;
+        }
+        Some(p)
     }
 }

@@ -54,6 +54,7 @@ mod polyline;
 mod thick;
 mod variants;
 
+pub use bresenham::LinePixels;
 pub use polyline::{Polyline, StyledPolyline, StyledPolylineVariant};
 
 use embedded_graphics_core::{
@@ -371,6 +372,32 @@ impl Line {
         }
     }
 
+    /// The pixels the line lights inside `clip`, in order; `None` if none
+    /// is inside.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_raster::Line;
+    ///
+    /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
+    /// let pixels: Vec<Point> = Line::new(Point::new(-2, 0), Point::new(1, 3)).pixels(&clip).unwrap().collect();
+    /// assert_eq!(pixels, [Point::new(0, 2), Point::new(1, 3)]);
+    /// assert!(Line::new(Point::new(-9, 0), Point::new(-1, 3)).pixels(&clip).is_none());
+    /// ```
+    pub fn pixels(&self, clip: &Rectangle) -> Option<LinePixels> {
+        self.exact_pixels(clip, false)
+    }
+
+    /// The exact (Bresenham) pixels, without the pixel at `end` if
+    /// `skip_end`.
+    fn exact_pixels(&self, clip: &Rectangle, skip_end: bool) -> Option<LinePixels> {
+        let c = Canonical::new(self.start, self.end);
+        let v = c.visible(clip, skip_end)?;
+        Some(LinePixels { c, v })
+    }
+
     /// The exact (Bresenham) runs, without the pixel at `end` if `skip_end`.
     fn exact_runs<E>(
         &self,
@@ -397,6 +424,21 @@ trait RunSource: Copy {
         skip_end: bool,
         f: &mut impl FnMut(Run) -> Result<(), E>,
     ) -> Result<(), E>;
+
+    /// Draws the 1-pixel segment into `sink`: as runs, or for the exact
+    /// line as [`LinePixels`] (which a framebuffer walks itself).
+    fn draw_thin<C: PixelColor, S: SpanSink<C>>(
+        self,
+        line: &Line,
+        skip_end: bool,
+        color: C,
+        sink: &mut S,
+    ) -> Result<(), S::Error> {
+        let clip = sink.bounds();
+        self.runs(line, &clip, skip_end, &mut |r: Run| {
+            fill_run(sink, r, color)
+        })
+    }
 }
 
 /// The exact line.
@@ -412,6 +454,19 @@ impl RunSource for Exact {
         f: &mut impl FnMut(Run) -> Result<(), E>,
     ) -> Result<(), E> {
         line.exact_runs(clip, skip_end, f)
+    }
+
+    fn draw_thin<C: PixelColor, S: SpanSink<C>>(
+        self,
+        line: &Line,
+        skip_end: bool,
+        color: C,
+        sink: &mut S,
+    ) -> Result<(), S::Error> {
+        match line.exact_pixels(&sink.bounds(), skip_end) {
+            Some(pixels) => sink.fill_line(pixels, color),
+            None => Ok(()),
+        }
     }
 }
 
@@ -603,9 +658,7 @@ fn draw_segment<C: PixelColor, S: SpanSink<C>>(
     let clip = sink.bounds();
     match width {
         0 => Ok(()),
-        1 => source.runs(&line, &clip, skip_end, &mut |r: Run| {
-            fill_run(sink, r, color)
-        }),
+        1 => source.draw_thin(&line, skip_end, color, sink),
         w => match thick::triangles(line.start, line.end, w, &clip) {
             Some(tris) => tris
                 .iter()
@@ -617,7 +670,7 @@ fn draw_segment<C: PixelColor, S: SpanSink<C>>(
 
 /// Writes a run (inside the sink's bounds) into `sink`.
 #[inline(always)]
-fn fill_run<C: PixelColor, S: SpanSink<C>>(
+pub(crate) fn fill_run<C: Copy, S: SpanSink<C> + ?Sized>(
     sink: &mut S,
     run: Run,
     color: C,

@@ -13,7 +13,10 @@ use embedded_graphics_core::{
     primitives::Rectangle,
 };
 
-use crate::span::Span;
+use crate::{
+    line::{fill_run, LinePixels},
+    span::Span,
+};
 
 /// Receives the pixels a shape lights, already clipped: the one place
 /// where rasterized shapes meet memory or a display.
@@ -82,6 +85,17 @@ pub trait SpanSink<C> {
             y = y.saturating_add(1);
         }
         Ok(())
+    }
+
+    /// Sets the pixels of a 1-pixel line to `color`. The provided
+    /// implementation writes them as runs:
+    /// [`fill_span`](Self::fill_span) for an x-major line,
+    /// [`fill_column`](Self::fill_column) for a y-major one.
+    fn fill_line(&mut self, pixels: LinePixels, color: C) -> Result<(), Self::Error>
+    where
+        C: Copy,
+    {
+        pixels.for_each_run(|run| fill_run(self, run, color))
     }
 
     /// Sets every pixel of `area` to `color`. The provided implementation
