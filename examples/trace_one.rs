@@ -15,9 +15,9 @@ mod target {
     #[entry]
     fn main() -> ! {
         static mut FB: SceneBuffer = SceneBuffer::new();
-        use embedded_graphics_core::{prelude::*, primitives::Rectangle};
-        let r = Rectangle::new(Point::new(3, 5), Size::new(200, 200));
-        let _ = FB.fill_solid(black_box(&r), Rgb565::new(0, 40, 31));
+        use embedded_graphics_core::prelude::*;
+        let l = embedded_raster::Line::new(Point::new(60, 20), Point::new(260, 220));
+        let _ = black_box(l).stroke(Rgb565::new(0, 40, 31)).draw_spans(FB);
         super::semihosting::exit_success()
     }
 }

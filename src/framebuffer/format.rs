@@ -174,40 +174,36 @@ pub trait PixelFormat {
     }
 }
 
-/// [`PixelFormat::fill_line`] for `B`-byte pixels: the byte offset of the
-/// first pixel, then per pixel one step along the major axis, plus one
-/// along the minor axis where the line moves (rows are `stride` bytes
-/// apart). An offset that would leave `0..=usize::MAX` stops the walk;
-/// each write is bounds-checked.
+/// [`PixelFormat::fill_line`] for `B`-byte pixels: the buffer as an array
+/// of pixels, walked by index (one pixel along the major axis, one row or
+/// pixel more along the minor axis where the line moves), one
+/// bounds-checked store per pixel. Indices stay within the buffer's
+/// pixels plus one row, far from overflow.
 #[inline(always)]
 fn walk_line<const B: usize>(buffer: &mut [u8], stride: usize, pixels: &LinePixels, px: [u8; B]) {
+    let (cells, _) = buffer.as_chunks_mut::<B>();
     let first = pixels.first();
-    let (Ok(x), Ok(y), Ok(stride_step)) = (
-        usize::try_from(first.x),
-        usize::try_from(first.y),
-        isize::try_from(stride),
+    let row = stride / B;
+    let (Ok(x), Ok(y), Ok(row)) = (
+        isize::try_from(first.x),
+        isize::try_from(first.y),
+        isize::try_from(row),
     ) else {
         return;
     };
-    let mut at = y
-        .checked_mul(stride)
-        .and_then(|row| row.checked_add(x.checked_mul(B)?));
-    let minor = pixels.minor_step() as isize;
+    let Some(start) = y.checked_mul(row).and_then(|r| r.checked_add(x)) else {
+        return;
+    };
+    let s = pixels.minor_step() as isize;
     let (major, minor) = if pixels.x_major() {
-        (B as isize, minor * stride_step)
+        (1, s * row)
     } else {
-        (stride_step, minor * B as isize)
+        (row, s)
     };
-    let mut put = |at: Option<usize>| {
-        if let Some(dst) = at.and_then(|a| buffer.get_mut(a..a.checked_add(B)?)) {
-            dst.copy_from_slice(&px);
+    pixels.walk(start, major, minor, |at| {
+        if let Some(cell) = usize::try_from(at).ok().and_then(|at| cells.get_mut(at)) {
+            *cell = px;
         }
-    };
-    put(at);
-    pixels.walk(|moves| {
-        let step = if moves { major + minor } else { major };
-        at = at.and_then(|a| a.checked_add_signed(step));
-        put(at);
     });
 }
 

@@ -180,21 +180,28 @@ impl LinePixels {
         self.c.x_major
     }
 
-    /// Calls `step(minor_moves)` once per pixel after the first (at
-    /// [`first`](Self::first)), telling whether the minor coordinate moves
-    /// there: the walk in the narrowest width that holds the decision
-    /// variable, for sinks that keep their own position.
+    /// Walks the pixels with an index that moves by `major` per pixel and
+    /// by `minor` more where the line moves along its minor axis, starting
+    /// at `first`, calling `plot` with each index: for sinks that address
+    /// their memory themselves. The decision variable is kept in the
+    /// narrowest width that holds it.
     #[inline(always)]
-    pub(crate) fn walk(&self, mut step: impl FnMut(bool)) {
+    pub(crate) fn walk(&self, first: isize, major: isize, minor: isize, plot: impl FnMut(isize)) {
         if self.c.dmajor < 1 << 30 {
-            self.walk_in::<i32>(&mut step);
+            self.walk_in::<i32>(first, major, minor, plot);
         } else {
-            self.walk_in::<i64>(&mut step);
+            self.walk_in::<i64>(first, major, minor, plot);
         }
     }
 
     #[inline(always)]
-    fn walk_in<T: Wide>(&self, step: &mut impl FnMut(bool)) {
+    fn walk_in<T: Wide>(
+        &self,
+        first: isize,
+        major: isize,
+        minor: isize,
+        mut plot: impl FnMut(isize),
+    ) {
         // Within [-2 dmajor, 2 dmajor]: `walk` picks a width that holds them.
         let (Some(two_minor), Some(two_major), Some(mut d)) = (
             T::narrow(2 * self.c.dminor),
@@ -203,13 +210,16 @@ impl LinePixels {
         ) else {
             return;
         };
+        let mut at = first;
+        plot(at);
         for _ in 1..self.len() {
-            let moves = d >= T::ZERO;
-            if moves {
+            if d >= T::ZERO {
                 d = d - two_major;
+                at += minor;
             }
             d = d + two_minor;
-            step(moves);
+            at += major;
+            plot(at);
         }
     }
 
