@@ -148,10 +148,12 @@ pub fn for_each_mesh_triangle<E>(
     mut f: impl FnMut(Triangle, Rgb565) -> Result<(), E>,
 ) -> Result<(), E> {
     const STRIDE: usize = (MESH_COLS + 1) as usize;
-    let mut grid = [Vertex::from_raw(0, 0); STRIDE * (MESH_ROWS + 1) as usize];
+    let mut grid = [[Vertex::from_raw(0, 0); STRIDE]; (MESH_ROWS + 1) as usize];
     let mut rng = Rng::new(0x2545_f491);
-    for j in 0..=MESH_ROWS {
-        for i in 0..=MESH_COLS {
+    // Iterators rather than indices: no bounds check, so no panic path is
+    // linked into the code-size firmware.
+    for (j, row) in (0..).zip(grid.iter_mut()) {
+        for (i, vertex) in (0..).zip(row.iter_mut()) {
             let x = (MESH_AREA.top_left.x + i * MESH_CELL) * 4096;
             let y = (MESH_AREA.top_left.y + j * MESH_CELL) * 4096;
             let inner = i > 0 && i < MESH_COLS && j > 0 && j < MESH_ROWS;
@@ -160,15 +162,15 @@ pub fn for_each_mesh_triangle<E>(
             } else {
                 (0, 0)
             };
-            grid[j as usize * STRIDE + i as usize] = Vertex::from_raw(x + dx, y + dy);
+            *vertex = Vertex::from_raw(x + dx, y + dy);
         }
     }
-    for j in 0..MESH_ROWS as usize {
-        for i in 0..MESH_COLS as usize {
-            let a = grid[j * STRIDE + i];
-            let b = grid[j * STRIDE + i + 1];
-            let c = grid[(j + 1) * STRIDE + i];
-            let d = grid[(j + 1) * STRIDE + i + 1];
+    for (j, (upper, lower)) in grid.iter().zip(grid.iter().skip(1)).enumerate() {
+        let cells = upper.windows(2).zip(lower.windows(2));
+        for (i, (top, bottom)) in cells.enumerate() {
+            let (&[a, b], &[c, d]) = (top, bottom) else {
+                continue;
+            };
             // Alternate the diagonal, so both orientations of shared edges occur.
             let (t0, t1) = if (i + j) % 2 == 0 {
                 (Triangle::new(a, b, d), Triangle::new(a, d, c))

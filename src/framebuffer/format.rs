@@ -327,8 +327,8 @@ fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
         bytes.fill(first);
     } else if bytes.len() < 4 * B {
         // Whole pixels only: `bytes` is a span of them.
-        for px in bytes.chunks_exact_mut(B) {
-            px.copy_from_slice(&pixel);
+        for px in bytes.as_chunks_mut::<B>().0 {
+            *px = pixel;
         }
     } else {
         fill_words(bytes, pixel);
@@ -345,13 +345,13 @@ fn fill_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     if offset % B == 0 && 4 % B == 0 {
         // Whole pixels up to the boundary (for 2-byte pixels in a
         // word-aligned buffer: none or one), then one repeated word.
-        for px in head.chunks_exact_mut(B) {
-            px.copy_from_slice(&pixel);
+        for px in head.as_chunks_mut::<B>().0 {
+            *px = pixel;
         }
         fill_u32(words, u32::from_ne_bytes([at(0), at(1), at(2), at(3)]));
         // The tail is whole pixels too: the span and the head are.
-        for px in tail.chunks_exact_mut(B) {
-            px.copy_from_slice(&pixel);
+        for px in tail.as_chunks_mut::<B>().0 {
+            *px = pixel;
         }
         return;
     }
@@ -364,11 +364,10 @@ fn fill_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
         let i = offset + 4 * k;
         *w = u32::from_ne_bytes([at(i), at(i + 1), at(i + 2), at(i + 3)]);
     }
-    let mut chunks = words.chunks_exact_mut(B);
-    for chunk in &mut chunks {
-        chunk.copy_from_slice(&block);
+    let (blocks, rest) = words.as_chunks_mut::<B>();
+    for chunk in blocks {
+        *chunk = block;
     }
-    let rest = chunks.into_remainder();
     for (w, b) in rest.iter_mut().zip(block) {
         *w = b;
     }
@@ -384,11 +383,11 @@ fn fill_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
 /// unrolled only 4 times.
 #[inline(always)]
 fn fill_u32(words: &mut [u32], word: u32) {
-    let mut blocks = words.chunks_exact_mut(8);
-    for block in &mut blocks {
-        block.copy_from_slice(&[word; 8]);
+    let (blocks, rest) = words.as_chunks_mut::<8>();
+    for block in blocks {
+        *block = [word; 8];
     }
-    blocks.into_remainder().fill(word);
+    rest.fill(word);
 }
 
 /// [`PixelFormat::write_span`] for `B`-byte pixels.
@@ -402,9 +401,9 @@ fn write_bytes<const B: usize, C, I: Iterator<Item = C>>(
         return 0;
     };
     let mut written = 0;
-    for px in bytes.chunks_exact_mut(B) {
+    for px in bytes.as_chunks_mut::<B>().0 {
         let Some(color) = colors.next() else { break };
-        px.copy_from_slice(&encode(color));
+        *px = encode(color);
         written += 1;
     }
     written

@@ -35,15 +35,15 @@
 //!
 //! # Widths
 //!
-//! The setup divides twice (the first crossing and `q`), in 32 bits when
-//! the operands fit (a single hardware division on a Cortex-M), else in 64
-//! or, for a product of two 33-bit differences, 128 bits
-//! ([`mul_div_ceil`]). The state steps in `T`: with every relative
+//! The setup divides twice (`q` and the first crossing, see
+//! [`Edge::new`]), in 32 bits when the operands fit (a single hardware
+//! division on a Cortex-M), else in 64; no width beyond 64 bits is ever
+//! divided. The state steps in `T`: with every relative
 //! coordinate below `2^29` in magnitude, `x`, `q`, `s`, `dy` and
 //! `x + 4095` all stay below `2^31` (`|q| <= |dx| + 1` once the edge spans
 //! two rows, since then `dy > 4096`), so `i32` is exact; `i64` always is.
 
-use super::wide::{div_rem_double, mul_div_ceil, Narrow, Wide};
+use super::wide::{Narrow, Wide};
 
 /// Raw units per pixel, and its logarithm.
 const ONE: i32 = 1 << SHIFT;
@@ -74,33 +74,43 @@ pub(crate) struct Edge<T> {
 }
 
 impl<T: Narrow> Edge<T> {
-    /// The edge from `top` to `bottom` (relative raw units below
-    /// [`Wide::difference`], `top.1 < bottom.1`), started on its first
-    /// row at or below row `from_row`. `None` if it crosses no row from
-    /// there.
-    #[inline(always)]
+    /// The edge from `top` to `bottom` (relative raw units within the
+    /// bound of [`Wide::difference`], `top.1 < bottom.1`), started on its
+    /// first row at or below row `from_row`. `None` if it crosses no row
+    /// from there.
+    ///
+    /// With `4096 dx = q dy + r`, the edge's first row `k0` at `e0 = 4096
+    /// k0 - y0` below its top (`0 <= e0 < 4096`) and `n` rows skipped by
+    /// `from_row`, the crossing is `x0 + n q + ceil((e0 dx + n r) / dy)`.
+    /// Both products are small: `e0 |dx| < 2^12 |dx|` and `n r < n dy <=
+    /// dy^2 / 4096`, below `2^49` for `i32` coordinates (below `2^29`) and
+    /// `2^55` for `i64` ones (below `2^33`): the numerator fits 64 bits,
+    /// and 32 when the edge is short.
+    ///
+    /// Never inlined: a triangle sets up three edges, and one copy of this
+    /// code per width is smaller, at the price of a call.
+    #[inline(never)]
     pub(crate) fn new(top: (T, T), bottom: (T, T), from_row: i32) -> Option<Self> {
-        // Differences of coordinates below COORD_BOUND fit T.
+        // Differences of coordinates within the bound fit T.
         let (dx, dy) = (bottom.0 - top.0, bottom.1 - top.1);
-        let first = first_row_at_or_below(top.1).max(T::narrow(from_row.into())?);
+        let start = first_row_at_or_below(top.1);
+        let first = start.max(T::narrow(from_row.into())?);
         let last = first_row_at_or_below(bottom.1) - T::ONE;
         if first > last {
             return None;
         }
         let one = T::narrow(ONE.into())?;
-        // 0 <= ey < dy: the sample line lies on the edge.
-        let ey = first * one - top.1;
-        let (c, s) = mul_div_ceil(ey, dx, dy)?;
-        let (q, r) = if first < last {
-            div_rem_double(T::Double::from(dx) * T::Double::from(one), dy)?
-        } else {
-            // Never stepped.
-            (T::ZERO, T::ZERO)
-        };
+        let wide = |v: T| T::Double::from(v);
+        let (q, r) = T::div_rem_wide(wide(dx) * wide(one), dy)?;
+        let (e0, n) = (start * one - top.1, first - start);
+        // ceil(m / dy) = -floor(-m / dy); the remainder of -m is c dy - m.
+        let minus = -(wide(e0) * wide(dx) + wide(n) * wide(r));
+        let (f, s) = T::div_rem_wide(minus, dy)?;
         Some(Self {
             first_row: first.to_i32()?,
             last_row: last.to_i32()?,
-            x: top.0 + c,
+            // n q + c is the crossing's move from x0 within the edge.
+            x: top.0 + n * q - f,
             s,
             q,
             r,

@@ -85,52 +85,36 @@ impl_wide!(i128, |a: i32, b: i32, _| Some(
 pub(crate) trait Narrow: Wide {
     /// The double width.
     type Double: Wide + From<Self>;
-    /// `v` in this width, if it fits.
-    fn from_double(v: Self::Double) -> Option<Self>;
+
+    /// `floor(n / d)` and the remainder in `0..d`, for `d > 0` and `n` of
+    /// double width: in `i32` when `n` fits (one hardware division on a
+    /// 32-bit core), else in `i64`; never in 128 bits, so `n` must fit
+    /// `i64`. `None` if `d <= 0` or a value does not fit.
+    fn div_rem_wide(n: Self::Double, d: Self) -> Option<(Self, Self)>;
 }
 
 impl Narrow for i32 {
     type Double = i64;
+
     #[inline]
-    fn from_double(v: i64) -> Option<Self> {
-        i32::try_from(v).ok()
+    fn div_rem_wide(n: i64, d: i32) -> Option<(i32, i32)> {
+        match i32::try_from(n) {
+            Ok(n) => n.div_rem_floor(d),
+            Err(_) => {
+                let (q, r) = n.div_rem_floor(d.into())?;
+                Some((i32::try_from(q).ok()?, i32::try_from(r).ok()?))
+            }
+        }
     }
 }
 
 impl Narrow for i64 {
     type Double = i128;
+
     #[inline]
-    fn from_double(v: i128) -> Option<Self> {
-        i64::try_from(v).ok()
+    fn div_rem_wide(n: i128, d: i64) -> Option<(i64, i64)> {
+        i64::try_from(n).ok()?.div_rem_floor(d)
     }
-}
-
-/// `floor(n / d)` and the remainder in `0..d`, for `d > 0`, with `n` of
-/// double width: divided in `T` when `n` fits (one hardware division on
-/// a 32-bit core for `T = i32`), in the double width otherwise. `None` if
-/// `d <= 0` or the quotient does not fit `T`.
-#[inline(always)]
-pub(crate) fn div_rem_double<T: Narrow>(n: T::Double, d: T) -> Option<(T, T)> {
-    match T::from_double(n) {
-        Some(n) => n.div_rem_floor(d),
-        None => {
-            let (q, r) = n.div_rem_floor(d.into())?;
-            Some((T::from_double(q)?, T::from_double(r)?))
-        }
-    }
-}
-
-/// `ceil(a b / d)` for `d > 0`, and the remainder `ceil(a b / d) d - a b`
-/// (in `0..d`). The product is exact in the double width; the division
-/// runs as [`div_rem_double`]. `None` if `d <= 0` or the quotient does not
-/// fit `T`.
-#[inline(always)]
-pub(crate) fn mul_div_ceil<T: Narrow>(a: T, b: T, d: T) -> Option<(T, T)> {
-    // |a|, |b| <= 2^(k-1) for k-bit T: the product and its negation fit 2k bits.
-    let minus_n = -(T::Double::from(a) * T::Double::from(b));
-    // ceil(n / d) = -floor(-n / d), and the remainder of -n is c d - n.
-    let (f, r) = div_rem_double::<T>(minus_n, d)?;
-    Some((-f, r))
 }
 
 /// The doubled signed area of `a, b, c` (raw 20.12 units): positive when
@@ -151,27 +135,20 @@ mod tests {
     use super::*;
 
     #[test]
-    fn floor_division_of_negatives() {
-        assert_eq!(div_rem_double::<i32>(-7, 2), Some((-4, 1)));
-        assert_eq!(div_rem_double::<i32>(-(1i64 << 40), 3), None);
+    fn divisions_in_the_narrowest_width() {
+        assert_eq!(i32::div_rem_wide(-7, 2), Some((-4, 1)));
+        assert_eq!(i32::div_rem_wide(-(1i64 << 40), 3), None);
+        assert_eq!(i32::div_rem_wide(1i64 << 40, 1 << 20), Some((1 << 20, 0)));
         assert_eq!(
-            div_rem_double::<i32>(1i64 << 40, 1 << 20),
-            Some((1 << 20, 0))
+            i32::div_rem_wide(-(1i64 << 40) - 1, 1 << 20),
+            Some((-(1 << 20) - 1, (1 << 20) - 1))
         );
-        assert_eq!(div_rem_double::<i64>(5, 0), None);
-    }
-
-    #[test]
-    fn ceiling_of_products_beyond_i64() {
-        // (2^40)(2^40) / (2^33 + 1), rounded up, checked against u128.
-        let (n, d) = (1i64 << 40, (1i64 << 33) + 1);
-        let exact = (1u128 << 80).div_ceil(d as u128);
-        let (c, r) = mul_div_ceil::<i64>(n, n, d).unwrap();
-        assert_eq!(c as u128, exact);
-        assert_eq!(r as u128, exact * d as u128 - (1u128 << 80));
-        assert_eq!(mul_div_ceil::<i32>(-3, 5, 4), Some((-3, 3)));
-        // 2^29 * 2^29 / 3 in i64, the quotient beyond i32.
-        assert_eq!(mul_div_ceil::<i32>(1 << 29, 1 << 29, 3), None);
+        assert_eq!(i64::div_rem_wide(5, 0), None);
+        assert_eq!(i64::div_rem_wide(1i128 << 64, 3), None);
+        assert_eq!(
+            i64::div_rem_wide(-(1i128 << 62), 3),
+            Some((-(1i64 << 62) / 3 - 1, 2))
+        );
     }
 
     #[test]

@@ -84,65 +84,53 @@ fn walk<T: Narrow, E>(
     p: [(T, T); 3],
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
-    // Coordinates below COORD_BOUND: the orientation is exact.
+    // Coordinates within the bound: the orientation is exact.
     let turn = orientation(p[0], p[1], p[2]);
     if turn == T::Double::ZERO {
         return Ok(());
     }
-    if turn < T::Double::ZERO {
-        walk_sides::<T, E, true>(frame, p, emit)
-    } else {
-        walk_sides::<T, E, false>(frame, p, emit)
-    }
-}
-
-/// [`walk`] once the side of the short edges is known (left if
-/// `SHORT_LEFT`), so that the row loop has no choice left to make.
-#[inline(always)]
-fn walk_sides<T: Narrow, E, const SHORT_LEFT: bool>(
-    frame: &Frame,
-    p: [(T, T); 3],
-    emit: &mut impl FnMut(Span) -> Result<(), E>,
-) -> Result<(), E> {
+    let short_left = turn < T::Double::ZERO;
     let last = frame.height - 1;
     let Some(mut long) = Edge::<T>::new(p[0], p[2], 0) else {
         return Ok(());
     };
+    // Each half: the rows of the short edge, between it and the long edge.
+    let mut half = |short: &mut Edge<T>, long: &mut Edge<T>| {
+        let (from, end) = (short.first_row, short.last_row.min(last));
+        match short_left {
+            true => rows(frame, short, long, from, end, emit),
+            false => rows(frame, long, short, from, end, emit),
+        }
+        .map(|()| end)
+    };
     if let Some(mut upper) = Edge::<T>::new(p[0], p[1], 0) {
-        let end = upper.last_row.min(last);
-        walk_pair::<T, E, SHORT_LEFT>(frame, &mut long, &mut upper, end, emit)?;
-        if end == last {
+        if half(&mut upper, &mut long)? == last {
             return Ok(());
         }
         long.step();
     }
     if let Some(mut lower) = Edge::<T>::new(p[1], p[2], 0) {
-        let end = lower.last_row.min(last);
-        walk_pair::<T, E, SHORT_LEFT>(frame, &mut long, &mut lower, end, emit)?;
+        half(&mut lower, &mut long)?;
     }
     Ok(())
 }
 
-/// Emits the rows from `short`'s first row to `end` between `long` and
-/// `short`, both positioned on that first row; leaves both on `end` (never
-/// steps past it, so values stay within the edges' bounds).
-#[inline(always)]
-fn walk_pair<T: Narrow, E, const SHORT_LEFT: bool>(
+/// Emits rows `from..=end` between `left` and `right`, both positioned on
+/// row `from`; leaves both on `end` (never steps past it, so values stay
+/// within the edges' bounds). One copy per width: the side is data here,
+/// not a type, and the loop does not depend on it.
+fn rows<T: Narrow, E>(
     frame: &Frame,
-    long: &mut Edge<T>,
-    short: &mut Edge<T>,
+    left: &mut Edge<T>,
+    right: &mut Edge<T>,
+    from: i32,
     end: i32,
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
-    let mut row = short.first_row;
-    let (left, right) = if SHORT_LEFT {
-        (short, long)
-    } else {
-        (long, short)
-    };
     let Some(width) = T::narrow(frame.width.into()) else {
         return Ok(());
     };
+    let mut row = from;
     while row <= end {
         let x0 = left.threshold().max(T::ZERO);
         let x1 = right.threshold().min(width);
