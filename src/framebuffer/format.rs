@@ -319,13 +319,14 @@ fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Option<&mut [u
 /// repeating pattern (for 2- and 4-byte pixels one word repeated, which
 /// the compiler turns into multi-register stores on a Cortex-M and vector
 /// stores on a host; for 3-byte pixels a block of three words), then the
-/// last bytes. Spans of a few pixels are written pixel by pixel.
+/// last bytes. Spans under 16 pixels are written pixel by pixel: for them
+/// the word setup costs more than it saves.
 #[inline(always)]
 fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     let Some(&first) = pixel.first() else { return };
     if pixel.iter().all(|&b| b == first) {
         bytes.fill(first);
-    } else if bytes.len() < 4 * B {
+    } else if bytes.len() < 16 * B {
         // Whole pixels only: `bytes` is a span of them.
         for px in bytes.as_chunks_mut::<B>().0 {
             *px = pixel;

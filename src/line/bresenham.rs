@@ -169,10 +169,10 @@ impl LinePixels {
         runs(&self.c, &self.v, &mut f)
     }
 
-    /// Whether the line moves along its minor axis less than once per four
-    /// pixels, so that its runs are long.
-    pub(crate) fn has_long_runs(&self) -> bool {
-        self.c.dminor.saturating_mul(4) < self.c.dmajor
+    /// Whether the line is x-major and moves along its minor axis less
+    /// than once per four pixels, so that its runs are long spans.
+    pub(crate) fn has_long_spans(&self) -> bool {
+        self.c.x_major && self.c.dminor.saturating_mul(4) < self.c.dmajor
     }
 
     /// Whether the line is x-major (one pixel per column).

@@ -130,10 +130,13 @@ fn rows<T: Narrow, E>(
     let Some(width) = T::narrow(frame.width.into()) else {
         return Ok(());
     };
+    // Stepped in locals, which stay in registers across `emit`, and
+    // written back at the end.
+    let (mut l, mut r) = (*left, *right);
     let mut row = from;
     while row <= end {
-        let x0 = left.threshold().max(T::ZERO);
-        let x1 = right.threshold().min(width);
+        let x0 = l.threshold().max(T::ZERO);
+        let x1 = r.threshold().min(width);
         if x0 < x1 {
             if let (Some(x0), Some(x1)) = (x0.to_i32(), x1.to_i32()) {
                 // Inside the frame, which lies inside the clip: no overflow.
@@ -147,9 +150,10 @@ fn rows<T: Narrow, E>(
         if row == end {
             break;
         }
-        left.step();
-        right.step();
+        l.step();
+        r.step();
         row += 1;
     }
+    (*left, *right) = (l, r);
     Ok(())
 }
