@@ -5,6 +5,8 @@
 
 #[path = "delaunay/check.rs"]
 mod check;
+#[path = "delaunay/cli.rs"]
+mod cli;
 mod common;
 
 use check::Pt;
@@ -273,6 +275,27 @@ fn thousand_random_points() {
         .map(|_| Vertex::from_raw(next(320 * 4096) as i32, next(240 * 4096) as i32))
         .collect();
     triangulate_and_check(&points);
+}
+
+#[test]
+fn the_most_points_a_triangulation_holds() {
+    use embedded_raster::delaunay::MAX_POINTS;
+    let mut seed = 99u64;
+    let mut next = |m: u64| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 33) % m
+    };
+    // 2000 x 2000 px on a 1/16 px lattice: some duplicates.
+    let points: Vec<_> = (0..MAX_POINTS)
+        .map(|_| Vertex::from_raw(next(32000) as i32 * 256, next(32000) as i32 * 256))
+        .collect();
+    let mut delaunay = Box::new(Delaunay::<MAX_POINTS>::new());
+    let mesh = delaunay.triangulate(&points).unwrap();
+    let pts: Vec<Pt> = points.iter().map(|&v| raw(v)).collect();
+    let tris: Vec<[Pt; 3]> = mesh.indices().map(|t| t.map(|i| pts[i])).collect();
+    check::check(&pts, &tris);
 }
 
 #[test]

@@ -300,7 +300,11 @@ fn vertex_colour(v: Vertex, index: usize, (w, h): (u32, u32)) -> String {
     let (fx, fy) = (fraction(x, w), fraction(y, h));
     let shade = 128 + i64::from(hash(index) >> 25); // 128..=255
     let channel = |c: i64| (c * shade / 255).clamp(0, 255);
-    let (r, g, b) = (40 + fx * 215 / 4095, 90 + (4095 - fy) * 80 / 4095, 60 + fy * 195 / 4095);
+    let (r, g, b) = (
+        40 + fx * 215 / 4095,
+        90 + (4095 - fy) * 80 / 4095,
+        60 + fy * 195 / 4095,
+    );
     format!("#{:02x}{:02x}{:02x}", channel(r), channel(g), channel(b))
 }
 

@@ -256,7 +256,11 @@ pub fn check(points: &[Pt], triangles: &[[Pt; 3]]) -> Vec<Pt> {
         "triangle count for n = {n}, h = {}",
         h.len()
     );
-    check_empty_circles(&set, triangles);
+    if set.len() * triangles.len() <= 4_000_000 {
+        check_empty_circles(&set, triangles);
+    } else {
+        check_locally_delaunay(triangles);
+    }
     h
 }
 
@@ -273,6 +277,36 @@ pub fn check_empty_circles(set: &BTreeSet<Pt>, triangles: &[[Pt; 3]]) {
                 in_circle_sign(a, b, c, p) <= 0,
                 "{p:?} strictly inside the circumcircle of {t:?}"
             );
+        }
+    }
+}
+
+/// For each edge shared by two triangles, neither far vertex lies strictly
+/// inside the other triangle's circumcircle. For a triangulation (checked
+/// above) this is equivalent to empty circumcircles (Delaunay's lemma), and
+/// takes time linear in the triangles rather than quadratic.
+pub fn check_locally_delaunay(triangles: &[[Pt; 3]]) {
+    let mut far: BTreeMap<(Pt, Pt), Pt> = BTreeMap::new();
+    for t in triangles {
+        let [a, b, c] = if cross(t[0], t[1], t[2]) > 0 {
+            *t
+        } else {
+            [t[0], t[2], t[1]]
+        };
+        for (u, v, w) in [(a, b, c), (b, c, a), (c, a, b)] {
+            // The triangle across u -> v has it as v -> u.
+            if let Some(&d) = far.get(&(v, u)) {
+                assert!(
+                    in_circle_sign(a, b, c, d) <= 0,
+                    "{d:?} strictly inside the circumcircle of {t:?}"
+                );
+                assert!(
+                    in_circle_sign(v, u, d, w) <= 0,
+                    "{w:?} strictly inside the circumcircle of {:?}",
+                    (v, u, d)
+                );
+            }
+            far.insert((u, v), w);
         }
     }
 }
