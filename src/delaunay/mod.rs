@@ -405,7 +405,7 @@ impl<'a> Triangulation<'a> {
     ///     .triangulate(&points)?
     ///     .triangles()
     ///     .map(|t| {
-    ///         let [a, b, c] = t.vertices().map(|v| v.raw()).map(|(x, y)| (i64::from(x), i64::from(y)));
+    ///         let [a, b, c] = t.vertices.map(|v| v.raw()).map(|(x, y)| (i64::from(x), i64::from(y)));
     ///         (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0)
     ///     })
     ///     .sum();
@@ -484,7 +484,7 @@ mod tests {
 
     #[test]
     fn morton_orders_by_interleaved_bits() {
-        assert_eq!(spread(0b1011), 0b1_0001_0101);
+        assert_eq!(spread(0b1011), 0b100_0101);
         let v = |x, y| Vertex::from_raw(x, y);
         assert!(morton(v(-1, 0)) < morton(v(0, 0)));
         assert!(morton(v(i32::MIN, i32::MIN)) == 0);
