@@ -74,6 +74,7 @@
 mod build;
 mod predicates;
 
+use core::cmp::Ordering;
 use core::fmt;
 
 use crate::{Triangle, Vertex};
@@ -432,7 +433,8 @@ fn sort_distinct(points: &[Vertex], order: &mut [u16]) -> usize {
         // At most MAX_POINTS points, so every index fits.
         *slot = i as u16;
     }
-    order.sort_unstable_by_key(|&i| (morton(points[usize::from(i)]), i));
+    let at = |i: u16| points[usize::from(i)];
+    order.sort_unstable_by(|&i, &j| morton_cmp(at(i), at(j)).then(i.cmp(&j)));
     let mut distinct = 0;
     for k in 0..order.len() {
         let p = order[k];
@@ -446,22 +448,26 @@ fn sort_distinct(points: &[Vertex], order: &mut [u16]) -> usize {
     distinct
 }
 
-/// The Morton (Z-order) code of a vertex: the bits of its coordinates,
-/// offset to unsigned, interleaved. Equal codes mean equal points.
-fn morton(v: Vertex) -> u64 {
-    let (x, y) = v.raw();
-    let unsigned = |c: i32| c.cast_unsigned() ^ 0x8000_0000;
-    spread(unsigned(x)) | spread(unsigned(y)) << 1
-}
-
-/// The bits of `v` at the even positions of a `u64`.
-fn spread(v: u32) -> u64 {
-    let mut x = u64::from(v);
-    x = (x | x << 16) & 0x0000_FFFF_0000_FFFF;
-    x = (x | x << 8) & 0x00FF_00FF_00FF_00FF;
-    x = (x | x << 4) & 0x0F0F_0F0F_0F0F_0F0F;
-    x = (x | x << 2) & 0x3333_3333_3333_3333;
-    (x | x << 1) & 0x5555_5555_5555_5555
+/// Compares two vertices in Morton (Z-order) order: the order of the
+/// codes that interleave the bits of their coordinates (offset to
+/// unsigned), y's above x's at each level, without building the codes:
+/// the coordinate whose first differing bit is higher decides.
+fn morton_cmp(a: Vertex, b: Vertex) -> Ordering {
+    let unsigned = |v: Vertex| {
+        let (x, y) = v.raw();
+        (
+            x.cast_unsigned() ^ 0x8000_0000,
+            y.cast_unsigned() ^ 0x8000_0000,
+        )
+    };
+    let ((ax, ay), (bx, by)) = (unsigned(a), unsigned(b));
+    let (dx, dy) = (ax ^ bx, ay ^ by);
+    // dy's highest set bit is below dx's.
+    let x_decides = dy < dx && dy < (dx ^ dy);
+    match x_decides {
+        true => ax.cmp(&bx),
+        false => ay.cmp(&by),
+    }
 }
 
 /// The first triangle: the first two points in `order` and the first
@@ -482,13 +488,43 @@ fn first_triangle(points: &[Vertex], order: &mut [u16]) -> Option<[u16; 3]> {
 mod tests {
     use super::*;
 
+    /// The Morton code itself: offset coordinates, bits interleaved.
+    fn morton(v: Vertex) -> u64 {
+        let spread = |c: i32| {
+            let u = u64::from(c.cast_unsigned() ^ 0x8000_0000);
+            (0..32).map(|k| (u >> k & 1) << (2 * k)).sum::<u64>()
+        };
+        let (x, y) = v.raw();
+        spread(x) | spread(y) << 1
+    }
+
     #[test]
-    fn morton_orders_by_interleaved_bits() {
-        assert_eq!(spread(0b1011), 0b100_0101);
+    fn morton_cmp_orders_as_the_codes() {
+        let values = [
+            i32::MIN,
+            -70000,
+            -4097,
+            -1,
+            0,
+            1,
+            2,
+            3,
+            4096,
+            4097,
+            123456,
+            i32::MAX,
+        ];
         let v = |x, y| Vertex::from_raw(x, y);
-        assert!(morton(v(-1, 0)) < morton(v(0, 0)));
-        assert!(morton(v(i32::MIN, i32::MIN)) == 0);
-        assert_eq!(morton(v(i32::MAX, i32::MAX)), u64::MAX);
+        for &ax in &values {
+            for &ay in &values {
+                for &bx in &values {
+                    for &by in &values {
+                        let (a, b) = (v(ax, ay), v(bx, by));
+                        assert_eq!(morton_cmp(a, b), morton(a).cmp(&morton(b)), "{a:?} {b:?}");
+                    }
+                }
+            }
+        }
     }
 
     #[test]

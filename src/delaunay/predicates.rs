@@ -6,7 +6,8 @@
 //! coordinates has `|dx| < 2^32` (an `i64`).
 //!
 //! - **Orientation** `dx1 * dy2 - dy1 * dx2`: each product is below `2^64`
-//!   in magnitude, the difference below `2^65`: `i128` with room to spare.
+//!   in magnitude, the difference below `2^65`: `i128` with room to spare;
+//!   `i64` when both differences are below `2^31` (products below `2^62`).
 //! - **In-circle**, with every coordinate taken relative to `d`
 //!   (`a' = a - d`, and so on):
 //!
@@ -21,7 +22,8 @@
 //!   below `3 * 2^130 < 2^132`: 133 signed bits, more than `i128` holds.
 //!   When every difference is below `2^30` (points within 262,144 px of
 //!   `d`, so every drawing on a screen), lifts and determinants are below
-//!   `2^61`, products below `2^122` and the sum below `2^124`: `i128`.
+//!   `2^61` (`i64`), products below `2^122` and the sum below `2^124`
+//!   (`i128`).
 //!   Otherwise the three products are formed exactly as 256-bit magnitudes
 //!   ([`U256`], from 64 x 64-bit partial products), summed separately for
 //!   positive and negative terms (each sum below `2^132`, so no carry
@@ -54,7 +56,15 @@ use crate::Vertex;
 /// assert_eq!(orientation(v(0, 0), v(5, 5), v(-7, -7)), Ordering::Equal);
 /// ```
 pub fn orientation(a: Vertex, b: Vertex, c: Vertex) -> Ordering {
-    cross(pt(a), pt(b), pt(c)).cmp(&0)
+    let (u, v) = (relative(b, a), relative(c, a));
+    // Differences below 2^31: products below 2^62, their difference below
+    // 2^63, so `i64` is exact; otherwise `i128` (below 2^65).
+    let small = |p: Delta| p.0.unsigned_abs() < 1 << 31 && p.1.unsigned_abs() < 1 << 31;
+    if small(u) && small(v) {
+        (u.0 * v.1).cmp(&(u.1 * v.0))
+    } else {
+        cross(pt(a), pt(b), pt(c)).cmp(&0)
+    }
 }
 
 /// Where `d` lies relative to the circle through `a`, `b` and `c`, exactly,
@@ -87,7 +97,7 @@ pub fn in_circle(a: Vertex, b: Vertex, c: Vertex, d: Vertex) -> Ordering {
     let [a, b, c] = [a, b, c].map(|v| relative(v, d));
     let near = |p: Delta| p.0.unsigned_abs() < 1 << 30 && p.1.unsigned_abs() < 1 << 30;
     if near(a) && near(b) && near(c) {
-        in_circle_i128(a, b, c).cmp(&0)
+        in_circle_near(a, b, c).cmp(&0)
     } else {
         in_circle_wide(a, b, c)
     }
@@ -112,9 +122,14 @@ fn det2(p: Delta, q: Delta) -> i128 {
     i128::from(p.0) * i128::from(q.1) - i128::from(p.1) * i128::from(q.0)
 }
 
-/// The determinant in `i128`; only for differences below `2^30`.
-fn in_circle_i128(a: Delta, b: Delta, c: Delta) -> i128 {
-    lift(a) * det2(b, c) + lift(b) * det2(c, a) + lift(c) * det2(a, b)
+/// The determinant for differences below `2^30`: lifts and 2 x 2
+/// determinants below `2^61` in `i64`, their products below `2^122` and the
+/// sum below `2^124` in `i128`.
+fn in_circle_near(a: Delta, b: Delta, c: Delta) -> i128 {
+    let lift = |p: Delta| p.0 * p.0 + p.1 * p.1;
+    let det2 = |p: Delta, q: Delta| p.0 * q.1 - p.1 * q.0;
+    let term = |l: i64, d: i64| i128::from(l) * i128::from(d);
+    term(lift(a), det2(b, c)) + term(lift(b), det2(c, a)) + term(lift(c), det2(a, b))
 }
 
 /// The determinant's sign from 256-bit products, for any differences.
@@ -226,8 +241,8 @@ mod tests {
             [(1, 1), (2, 2), (3, 3)],
         ];
         for [a, b, c] in cases {
-            assert_eq!(in_circle_wide(a, b, c), in_circle_i128(a, b, c).cmp(&0));
-            assert_eq!(in_circle_wide(b, a, c), in_circle_i128(b, a, c).cmp(&0));
+            assert_eq!(in_circle_wide(a, b, c), in_circle_near(a, b, c).cmp(&0));
+            assert_eq!(in_circle_wide(b, a, c), in_circle_near(b, a, c).cmp(&0));
         }
     }
 }
