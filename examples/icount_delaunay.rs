@@ -1,0 +1,183 @@
+//! Firmware: instructions to triangulate 100 and 1,000 points (and two
+//! grids) on the Cortex-M4, the point sets of `benches/delaunay.rs`.
+//!
+//! Run: `bash .ci/icount_delaunay`. It builds this example for
+//! `thumbv7em-none-eabihf`, runs it twice under QEMU (`mps2-an386`) with
+//! `-icount shift=7`, checks that both runs agree and that every
+//! triangulation matches the host's (the same example run on the host
+//! prints the same rows without counts), and prints a Markdown table.
+//!
+//! # The counter
+//!
+//! Under `-icount shift=7` each instruction takes 128 ns of virtual time
+//! and SysTick counts the 25 MHz clock: 3.2 ticks an instruction, so
+//! `round(ticks / 3.2)` is the instruction count (`examples/icount.rs`
+//! validates this on a loop of known length). A triangulation can outlast
+//! SysTick's 24 bits (5.2 M instructions), so the SysTick exception counts
+//! wraps; its handler's few instructions per wrap (one wrap per 5.2 M) are
+//! included in the counts.
+
+#![cfg_attr(target_arch = "arm", no_std, no_main)]
+
+#[cfg(target_arch = "arm")]
+#[path = "common/semihosting.rs"]
+mod semihosting;
+
+/// The point sets, the same as the host benchmark's.
+mod sets {
+    use embedded_raster::Vertex;
+
+    /// The most points in a set.
+    pub const MAX: usize = 1024;
+
+    /// Set labels and sizes: random points over 320 x 240, or grids.
+    pub const SETS: [(&str, usize); 4] = [
+        ("random 100", 100),
+        ("random 1000", 1000),
+        ("grid 10x10", 10),
+        ("grid 32x32", 32),
+    ];
+
+    /// Fills `out` with set `k`; returns its length.
+    pub fn fill(k: usize, out: &mut [Vertex; MAX]) -> usize {
+        let (label, n) = SETS[k];
+        if label.starts_with("random") {
+            let mut seed = 0x2545_f491_4f6c_dd1du64;
+            let mut next = |m: u64| {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                (seed % m) as i32
+            };
+            for v in &mut out[..n] {
+                *v = Vertex::from_raw(next(320 * 4096), next(240 * 4096));
+            }
+            n
+        } else {
+            for (k, v) in out[..n * n].iter_mut().enumerate() {
+                let (i, j) = ((k % n) as i32, (k / n) as i32);
+                *v = Vertex::from_raw((4 + 7 * i) * 4096, (4 + 7 * j) * 4096);
+            }
+            n * n
+        }
+    }
+
+    /// FNV-1a over the triangles' vertex indices, to compare with the host.
+    pub fn fnv1a(triangles: impl Iterator<Item = [usize; 3]>) -> u32 {
+        let mut h = 0x811c_9dc5u32;
+        for i in triangles.flatten() {
+            for b in (i as u16).to_le_bytes() {
+                h = (h ^ u32::from(b)).wrapping_mul(0x0100_0193);
+            }
+        }
+        h
+    }
+}
+
+#[cfg(target_arch = "arm")]
+mod target {
+    use core::hint::black_box;
+    use core::sync::atomic::{AtomicU32, Ordering::Relaxed};
+
+    use cortex_m::peripheral::{syst::SystClkSource, SYST};
+    use cortex_m_rt::{entry, exception};
+    use cortex_m_semihosting::hprintln;
+    use embedded_raster::{delaunay::Delaunay, Vertex};
+
+    use super::sets::{self, MAX, SETS};
+
+    /// SysTick wraps since the measurement started.
+    static WRAPS: AtomicU32 = AtomicU32::new(0);
+
+    #[exception]
+    fn SysTick() {
+        // Load and store: ARMv6-M has no atomic read-modify-write.
+        WRAPS.store(WRAPS.load(Relaxed) + 1, Relaxed);
+    }
+
+    /// SysTick ticks spent in `f`, wraps included.
+    fn ticks(syst: &mut SYST, f: &mut dyn FnMut()) -> u64 {
+        // Restart from the reload value: no wrap for 2^24 ticks.
+        syst.clear_current();
+        cortex_m::asm::delay(4);
+        WRAPS.store(0, Relaxed);
+        let t0 = SYST::get_current();
+        f();
+        // The wrap count and the counter, read without a wrap between.
+        let (wraps, t1) = loop {
+            let wraps = WRAPS.load(Relaxed);
+            let t1 = SYST::get_current();
+            if WRAPS.load(Relaxed) == wraps {
+                break (u64::from(wraps), t1);
+            }
+        };
+        (wraps << 24) + u64::from(t0) - u64::from(t1)
+    }
+
+    /// `round(ticks / 3.2)`.
+    fn instructions(ticks: u64) -> u64 {
+        (ticks * 10 + 16) / 32
+    }
+
+    #[entry]
+    fn main() -> ! {
+        static mut DELAUNAY: Delaunay<MAX> = Delaunay::new();
+        static mut POINTS: [Vertex; MAX] = [Vertex::from_raw(0, 0); MAX];
+        let mut syst = cortex_m::Peripherals::take().expect("peripherals").SYST;
+        syst.set_clock_source(SystClkSource::Core);
+        syst.set_reload(0x00FF_FFFF);
+        syst.clear_current();
+        syst.enable_interrupt();
+        syst.enable_counter();
+        let overhead = ticks(&mut syst, &mut || {});
+        // Check the wrap counting on a loop of known length, longer than
+        // one wrap: delay(n) runs n + 1 iterations of two instructions.
+        let looped = ticks(&mut syst, &mut || {
+            cortex_m::asm::delay(black_box(3_000_000))
+        });
+        let looped = instructions(looped - overhead);
+        hprintln!(
+            "validate\tdelay(3000000)={}\texpected={}",
+            looped,
+            6_000_002
+        );
+        assert!(
+            (6_000_002..6_000_002 + 64).contains(&looped),
+            "counter is off"
+        );
+        for k in 0..SETS.len() {
+            let n = sets::fill(k, POINTS);
+            let points = &POINTS[..n];
+            let spent = ticks(&mut syst, &mut || {
+                black_box(DELAUNAY.triangulate(black_box(points)).map(|m| m.len())).ok();
+            });
+            let mesh = DELAUNAY.triangulation(points);
+            hprintln!(
+                "row\t{}\t{}\t{}\t{:#010x}\t{}",
+                SETS[k].0,
+                n,
+                mesh.len(),
+                sets::fnv1a(mesh.indices()),
+                instructions(spent - overhead)
+            );
+        }
+        hprintln!("done");
+        super::semihosting::exit_success()
+    }
+}
+
+#[cfg(not(target_arch = "arm"))]
+fn main() {
+    use embedded_raster::{delaunay::Delaunay, Vertex};
+    use sets::{MAX, SETS};
+
+    // The same rows as the firmware, without instruction counts.
+    let mut delaunay = Box::new(Delaunay::<MAX>::new());
+    let mut points = Box::new([Vertex::from_raw(0, 0); MAX]);
+    for k in 0..SETS.len() {
+        let n = sets::fill(k, &mut points);
+        let mesh = delaunay.triangulate(&points[..n]).expect("within capacity");
+        let hash = sets::fnv1a(mesh.indices());
+        println!("row\t{}\t{n}\t{}\t{hash:#010x}", SETS[k].0, mesh.len());
+    }
+}
