@@ -38,9 +38,9 @@ mod sets {
         ("grid 32x32", 32),
     ];
 
-    /// Fills `out` with set `k`; returns its length.
-    pub fn fill(k: usize, out: &mut [Vertex; MAX]) -> usize {
-        let (label, n) = SETS[k];
+    /// Fills `out` with the set `(label, n)` of [`SETS`]; returns its
+    /// length.
+    pub fn fill((label, n): (&str, usize), out: &mut [Vertex; MAX]) -> usize {
         if label.starts_with("random") {
             let mut seed = 0x2545_f491_4f6c_dd1du64;
             let mut next = |m: u64| {
@@ -145,8 +145,8 @@ mod target {
             (6_000_002..6_000_002 + 64).contains(&looped),
             "counter is off"
         );
-        for k in 0..SETS.len() {
-            let n = sets::fill(k, POINTS);
+        for set in SETS {
+            let n = sets::fill(set, POINTS);
             let points = &POINTS[..n];
             let spent = ticks(&mut syst, &mut || {
                 black_box(DELAUNAY.triangulate(black_box(points)).map(|m| m.len())).ok();
@@ -154,7 +154,7 @@ mod target {
             let mesh = DELAUNAY.triangulation(points);
             hprintln!(
                 "row\t{}\t{}\t{}\t{:#010x}\t{}",
-                SETS[k].0,
+                set.0,
                 n,
                 mesh.len(),
                 sets::fnv1a(mesh.indices()),
@@ -174,10 +174,10 @@ fn main() {
     // The same rows as the firmware, without instruction counts.
     let mut delaunay = Box::new(Delaunay::<MAX>::new());
     let mut points = Box::new([Vertex::from_raw(0, 0); MAX]);
-    for k in 0..SETS.len() {
-        let n = sets::fill(k, &mut points);
+    for set in SETS {
+        let n = sets::fill(set, &mut points);
         let mesh = delaunay.triangulate(&points[..n]).expect("within capacity");
         let hash = sets::fnv1a(mesh.indices());
-        println!("row\t{}\t{n}\t{}\t{hash:#010x}", SETS[k].0, mesh.len());
+        println!("row\t{}\t{n}\t{}\t{hash:#010x}", set.0, mesh.len());
     }
 }
