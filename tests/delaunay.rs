@@ -89,6 +89,16 @@ fn check_pixels(hull: &[Pt], shapes: &[embedded_raster::Triangle]) {
     );
 }
 
+/// A linear congruential generator: `next(m)` is in `0..m`.
+fn lcg(mut seed: u64) -> impl FnMut(u64) -> u64 {
+    move |m| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 33) % m
+    }
+}
+
 fn grid(cols: usize, rows: usize, step: f64) -> Vec<Vertex> {
     (0..rows)
         .flat_map(|j| (0..cols).map(move |i| px(3.0 + i as f64 * step, 3.0 + j as f64 * step)))
@@ -188,36 +198,20 @@ fn points_on_a_circle_and_its_centre() {
         triangulate_and_check(&points);
     }
     // Exactly cocircular: the 12 lattice points on the circle of radius 5.
-    let ring: Vec<_> = [
-        (5, 0),
-        (4, 3),
-        (3, 4),
-        (0, 5),
-        (-3, 4),
-        (-4, 3),
-        (-5, 0),
-        (-4, -3),
-        (-3, -4),
-        (0, -5),
-        (3, -4),
-        (4, -3),
-    ]
-    .iter()
-    .map(|&(x, y)| px(50.0 + 8.0 * x as f64, 50.0 + 8.0 * y as f64))
-    .collect();
+    let ring: Vec<_> = (-5..=5i32)
+        .flat_map(|x| (-5..=5i32).map(move |y| (x, y)))
+        .filter(|(x, y)| x * x + y * y == 25)
+        .map(|(x, y)| px(50.0 + 8.0 * x as f64, 50.0 + 8.0 * y as f64))
+        .collect();
+    assert_eq!(ring.len(), 12);
     assert_eq!(triangulate_and_check(&ring).len(), 10);
 }
 
 #[test]
 fn clusters_far_apart() {
     let mut points = vec![];
-    let mut seed = 12345u64;
-    let mut next = || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 33) as f64 / (1u64 << 31) as f64
-    };
+    let mut lcg = lcg(12345);
+    let mut next = || lcg(1 << 31) as f64 / (1u64 << 31) as f64;
     for (cx, cy) in [
         (10.0, 10.0),
         (500.0, 20.0),
@@ -264,13 +258,7 @@ fn duplicates_are_kept_once() {
 
 #[test]
 fn thousand_random_points() {
-    let mut seed = 7u64;
-    let mut next = |m: u64| {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 33) % m
-    };
+    let mut next = lcg(7);
     let points: Vec<_> = (0..1000)
         .map(|_| Vertex::from_raw(next(320 * 4096) as i32, next(240 * 4096) as i32))
         .collect();
@@ -280,13 +268,7 @@ fn thousand_random_points() {
 #[test]
 fn the_most_points_a_triangulation_holds() {
     use embedded_raster::delaunay::MAX_POINTS;
-    let mut seed = 99u64;
-    let mut next = |m: u64| {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 33) % m
-    };
+    let mut next = lcg(99);
     // 2000 x 2000 px on a 1/16 px lattice: some duplicates.
     let points: Vec<_> = (0..MAX_POINTS)
         .map(|_| Vertex::from_raw(next(32000) as i32 * 256, next(32000) as i32 * 256))

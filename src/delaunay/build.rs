@@ -49,10 +49,11 @@ pub(crate) struct Face {
 }
 
 impl Face {
-    pub(crate) const EMPTY: Self = Self {
-        v: [GHOST; 3],
-        n: [0; 3],
-    };
+    pub(crate) const EMPTY: Self = Self::new([GHOST; 3], [0; 3]);
+
+    const fn new(v: [u16; 3], n: [u16; 3]) -> Self {
+        Self { v, n }
+    }
 
     pub(crate) fn is_ghost(&self) -> bool {
         self.v.contains(&GHOST)
@@ -98,22 +99,10 @@ impl<'a> Builder<'a> {
         // Face 0 is (a, b, c); faces 1, 2, 3 the ghosts across the edges
         // opposite a, b and c.
         faces[..4].copy_from_slice(&[
-            Face {
-                v: [a, b, c],
-                n: [1, 2, 3],
-            },
-            Face {
-                v: [c, b, GHOST],
-                n: [3, 2, 0],
-            },
-            Face {
-                v: [a, c, GHOST],
-                n: [1, 3, 0],
-            },
-            Face {
-                v: [b, a, GHOST],
-                n: [2, 1, 0],
-            },
+            Face::new([a, b, c], [1, 2, 3]),
+            Face::new([c, b, GHOST], [3, 2, 0]),
+            Face::new([a, c, GHOST], [1, 3, 0]),
+            Face::new([b, a, GHOST], [2, 1, 0]),
         ]);
         Self {
             points,
@@ -317,14 +306,8 @@ impl<'a> Builder<'a> {
             // g is (d, b, a) from slot j: across (a, d) lies gb, across (d, b) ga.
             let ga = other.n[(j + 2) % 3];
             let gb = other.n[(j + 1) % 3];
-            self.faces[usize::from(f)] = Face {
-                v: [p, a, d],
-                n: [gb, g, fb],
-            };
-            self.faces[usize::from(g)] = Face {
-                v: [p, d, b],
-                n: [ga, fa, f],
-            };
+            self.faces[usize::from(f)] = Face::new([p, a, d], [gb, g, fb]);
+            self.faces[usize::from(g)] = Face::new([p, d, b], [ga, fa, f]);
             self.relink(gb, g, f);
             self.relink(fa, f, g);
             self.push(f);

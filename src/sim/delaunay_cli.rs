@@ -23,11 +23,13 @@
 
 use std::ffi::OsString;
 use std::fmt::Write as _;
+use std::format;
 use std::io::Write;
 use std::path::PathBuf;
 use std::prelude::rust_2021::*;
-use std::{format, writeln};
 
+use super::cli::run_parsed;
+#[cfg(doc)]
 use super::cli::{EXIT_FAILURE, EXIT_OK, EXIT_USAGE};
 use super::scene::vertex;
 use super::SceneError;
@@ -101,31 +103,14 @@ struct Options {
 /// # std::fs::remove_file(&scene)?;
 /// # Ok::<(), std::io::Error>(())
 /// ```
-pub fn run<I, S>(args: I, mut stdout: impl Write, mut stderr: impl Write) -> i32
+pub fn run<I, S>(args: I, stdout: impl Write, stderr: impl Write) -> i32
 where
     I: IntoIterator<Item = S>,
     S: Into<OsString>,
 {
-    let options = match parse_args(args.into_iter().map(Into::into)) {
-        Ok(Some(options)) => options,
-        Ok(None) => {
-            return match stdout.write_all(USAGE.as_bytes()) {
-                Ok(()) => EXIT_OK,
-                Err(_) => EXIT_FAILURE,
-            };
-        }
-        Err(message) => {
-            let _ = write!(stderr, "delaunay: {message}\n\n{USAGE}");
-            return EXIT_USAGE;
-        }
-    };
-    match triangulate_file(&options) {
-        Ok(()) => EXIT_OK,
-        Err(message) => {
-            let _ = writeln!(stderr, "{message}");
-            EXIT_FAILURE
-        }
-    }
+    let parsed = parse_args(args.into_iter().map(Into::into));
+    let act = |options: &Options, _: &mut _| triangulate_file(options);
+    run_parsed(("delaunay", USAGE), parsed, act, stdout, stderr)
 }
 
 /// `Ok(None)` for `--help`.
