@@ -339,3 +339,65 @@ impl<'a> Builder<'a> {
 fn opposite_slot(face: &Face, a: u16, b: u16) -> usize {
     face.v.iter().position(|&v| v != a && v != b).unwrap_or(0)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Whether `location` holds `p`, by the definitions.
+    fn holds(b: &Builder<'_>, location: Location, p: Vertex) -> bool {
+        let edge = |face: &Face, k: usize| {
+            let (a, c) = (face.v[(k + 1) % 3], face.v[(k + 2) % 3]);
+            orientation(b.point(a), b.point(c), p)
+        };
+        match location {
+            Location::Face(f) => {
+                let face = b.face(f);
+                match face.v.iter().position(|&v| v == GHOST) {
+                    Some(k) => edge(&face, k) == Ordering::Greater,
+                    None => (0..3).all(|k| edge(&face, k) == Ordering::Greater),
+                }
+            }
+            Location::Edge(f, k) => {
+                let face = b.face(f);
+                !face.is_ghost()
+                    && edge(&face, k) == Ordering::Equal
+                    && (1..3).all(|i| edge(&face, (k + i) % 3) == Ordering::Greater)
+            }
+        }
+    }
+
+    /// The walk and its fallback, the scan of every face, both find a
+    /// face that holds each query point: inside, on an edge, or outside.
+    #[test]
+    fn walk_and_scan_locate_every_point() {
+        let v = |x: i32, y: i32| Vertex::from_raw(x * 4096, y * 4096);
+        let points: [Vertex; 9] = [
+            v(0, 0),
+            v(40, 0),
+            v(0, 40),
+            v(40, 40),
+            v(20, 20),
+            v(10, 30),
+            v(33, 7),
+            v(20, 0),
+            v(5, 12),
+        ];
+        let mut faces = [Face::EMPTY; 18];
+        let mut stack = [0; 9];
+        let mut b = Builder::new(&points, &mut faces, &mut stack, [0, 1, 2]);
+        for p in 3..9 {
+            b.insert(p);
+        }
+        for x in -5..46 {
+            for y in (-5..46).step_by(3) {
+                let p = v(x, y);
+                if points.contains(&p) {
+                    continue;
+                }
+                assert!(holds(&b, b.locate(p), p), "walk, {p:?}");
+                assert!(holds(&b, b.scan(p), p), "scan, {p:?}");
+            }
+        }
+    }
+}
