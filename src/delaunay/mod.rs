@@ -43,9 +43,10 @@
 //! # Exactness
 //!
 //! [`orientation`] and [`in_circle`] decide every branch exactly, in
-//! integers, for all 20.12 coordinates (`i128`, and 256-bit products for
-//! in-circle tests on points more than 262,144 px apart; the widths are
-//! proved in the source). No floating point, no wrapping arithmetic.
+//! integers, for all 20.12 coordinates (`i64` and `i128`, and 256-bit
+//! products for in-circle tests on points more than 262,144 px apart; the
+//! widths are proved in the source). No floating point, no wrapping
+//! arithmetic.
 //!
 //! # Degenerate input, deterministically
 //!
@@ -60,9 +61,9 @@
 //!   when the far point is *strictly* inside, so four points on a circle
 //!   keep the diagonal that insertion made. The insertion order depends
 //!   only on the coordinates (Morton order; for duplicates, the lowest
-//!   index), so the same point set gives the same triangles, whatever its
-//!   order, and every circumcircle is empty in the closed sense: points on
-//!   it are allowed, none inside.
+//!   index), so the same point set gives the same triangles (as
+//!   coordinates) whatever its order, and every circumcircle is empty in
+//!   the closed sense: points on it are allowed, none strictly inside.
 //!
 //! The triangle count is `2n - h - 2` for `n` distinct points, not all
 //! collinear, of which `h` lie on the hull's boundary.
