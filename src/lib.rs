@@ -16,6 +16,7 @@
 //! | [`line`](mod@line) | [`Line`], [`Polyline`] and their styles: exact Bresenham lines between any `i32` pixels, clipped before stepping (tie rule: the smaller coordinate), emitted as [`Run`]s; [`LineAlgorithm`] variants (DDA, naive); thick lines as two triangles |
 //! | [`Polygon`], [`FilledPolygon`], [`FillRule`] | the exact active-edge-table fill (even-odd and non-zero) with `heapless` storage of a chosen capacity, ear-clipping and fan triangulation, exact simple and convex tests |
 //! | [`shade`], [`GouraudTriangle`] | shading: the rounded average of vertex colours, Gouraud blends within 1 unit per channel (no per-pixel division), interpolated `u16` depth tested against a caller's [`DepthBuffer`](shade::DepthBuffer), each a separate type so flat-only code links none of it |
+//! | [`delaunay`] | Delaunay triangulation of up to `N` points in fixed storage ([`Delaunay`](delaunay::Delaunay)), incremental with Lawson flips, exact integer orientation and in-circle tests over the whole 20.12 range, deterministic on duplicates, collinear and cocircular points |
 //! | [`mesh`] | fixed-point 3D without floats: table sine/cosine, rotation, perspective projection to vertices and depths, an allocation-free latitude/longitude sphere |
 //! | [`framebuffer`] | [`Framebuffer`], an owned const-sized [`DrawTarget`] for Rgb565 (both byte orders), Rgb888, Gray8 and 1-bit |
 //! | `sim` (feature `sim`) | the host simulator: an overdraw-counting display, PNG export, the scene-file renderer |
@@ -65,6 +66,7 @@
 extern crate std;
 
 mod clip;
+pub mod delaunay;
 mod error;
 pub mod framebuffer;
 pub mod line;

@@ -126,26 +126,42 @@ struct Options {
 /// # std::fs::remove_file(&png)?;
 /// # Ok::<(), std::io::Error>(())
 /// ```
-pub fn run<I, S>(args: I, mut stdout: impl Write, mut stderr: impl Write) -> i32
+pub fn run<I, S>(args: I, stdout: impl Write, stderr: impl Write) -> i32
 where
     I: IntoIterator<Item = S>,
     S: Into<OsString>,
 {
+    let parsed = parse_args(args.into_iter().map(Into::into));
+    run_parsed(("render", USAGE), parsed, render, stdout, stderr)
+}
+
+/// What every command line does with its parsed arguments: `Ok(None)`
+/// (`--help`) prints the usage on stdout; a usage error prints
+/// `NAME: message`, a blank line and the usage on stderr ([`EXIT_USAGE`]);
+/// otherwise `act` runs, and its error is one line on stderr
+/// ([`EXIT_FAILURE`]).
+pub(super) fn run_parsed<O, W: Write>(
+    (name, usage): (&str, &str),
+    parsed: Result<Option<O>, String>,
+    act: impl FnOnce(&O, &mut W) -> Result<(), String>,
+    mut stdout: W,
+    mut stderr: impl Write,
+) -> i32 {
     // Failing to report on stdout or stderr leaves nothing better to do.
-    let options = match parse_args(args.into_iter().map(Into::into)) {
+    let options = match parsed {
         Ok(Some(options)) => options,
         Ok(None) => {
-            return match stdout.write_all(USAGE.as_bytes()) {
+            return match stdout.write_all(usage.as_bytes()) {
                 Ok(()) => EXIT_OK,
                 Err(_) => EXIT_FAILURE,
             };
         }
         Err(message) => {
-            let _ = write!(stderr, "render: {message}\n\n{USAGE}");
+            let _ = write!(stderr, "{name}: {message}\n\n{usage}");
             return EXIT_USAGE;
         }
     };
-    match render(&options, &mut stdout) {
+    match act(&options, &mut stdout) {
         Ok(()) => EXIT_OK,
         Err(message) => {
             let _ = writeln!(stderr, "{message}");

@@ -7,7 +7,8 @@
 //!   saves PNG images and PGM images of its write counts.
 //! - [`parse_scene`] reads a scene file into a [`Scene`]; [`render_scene`]
 //!   draws it on a [`SimDisplay`] with this crate's rasterizers.
-//! - [`cli::run`] is the whole `render` command line.
+//! - [`cli::run`] is the whole `render` command line, [`delaunay_cli::run`]
+//!   the `delaunay` example's.
 //!
 //! # Examples
 //!
@@ -34,6 +35,7 @@
 //! [`DrawTarget`]: embedded_graphics_core::draw_target::DrawTarget
 
 pub mod cli;
+pub mod delaunay_cli;
 mod display;
 mod render;
 mod scene;

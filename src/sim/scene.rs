@@ -352,7 +352,7 @@ fn extent(t: &str, what: &str) -> Result<u32, String> {
     u32::try_from(v).map_err(|_| format!("negative {what} `{}`", Shown(t)))
 }
 
-fn vertex(x: &str, y: &str) -> Result<Vertex, String> {
+pub(super) fn vertex(x: &str, y: &str) -> Result<Vertex, String> {
     Vertex::parse(x, y).map_err(|e| {
         // Name the offending token: `x` if it fails on its own, else `y`.
         let (e, t) = match Vertex::parse(x, "0") {
