@@ -437,22 +437,9 @@ fn runs_go_out_as_fill_solid() {
     assert_eq!(d.out_of_bounds_writes(), 0);
 }
 
-/// A small deterministic generator (xorshift64*), for the accuracy
-/// measurement.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    }
-
-    fn below(&mut self, n: u64) -> i64 {
-        (self.next() % n) as i64
-    }
-}
+#[path = "common/rng.rs"]
+mod rng;
+use rng::Rng;
 
 /// How often the variants differ from the exact line: the numbers quoted
 /// in `LineAlgorithm`'s docs. Run with `--nocapture` to see them.

@@ -549,12 +549,10 @@ fn clip_rectangles_at_the_ends_of_i32() {
 /// reproducer scene, on its 8 x 8 target.
 #[test]
 fn issue_12_edge_across_the_whole_range() {
-    let raw = |x: f64| (x * 4096.0) as i64;
-    let poly = [
-        v(raw(-524285.999755859375), raw(-524288.0)),
-        v(raw(524287.999755859375), raw(524287.999755859375)),
-        v(raw(-524285.999755859375), raw(524287.999755859375)),
-    ];
+    // -524285.999755859375, -524288 and 524287.999755859375 px in raw
+    // 1/4096 units.
+    let (left, min, max) = (-2_147_475_455, -2_147_483_648, 2_147_483_647);
+    let poly = [v(left, min), v(max, max), v(left, max)];
     for even_odd in [false, true] {
         assert_same(
             &scanline(&poly, even_odd, 0, 0, 8, 8),

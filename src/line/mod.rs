@@ -413,49 +413,27 @@ impl Line {
     }
 }
 
-/// Where the runs of a 1-pixel segment come from. A type rather than a
-/// value, so that code drawing only exact lines links none of the
-/// [`LineAlgorithm`] variants.
+/// How a 1-pixel segment is drawn: the exact line, or a
+/// [`LineAlgorithm`]. A type rather than a value, so that code drawing only
+/// exact lines links none of the variants.
 trait RunSource: Copy {
-    fn runs<E>(
-        self,
-        line: &Line,
-        clip: &Rectangle,
-        skip_end: bool,
-        f: &mut impl FnMut(Run) -> Result<(), E>,
-    ) -> Result<(), E>;
-
-    /// Draws the 1-pixel segment into `sink`: as runs, or for the exact
-    /// line as [`LinePixels`] (which a framebuffer walks itself).
+    /// Draws the segment into `sink`, without its last pixel if
+    /// `skip_end`.
     fn draw_thin<C: PixelColor, S: SpanSink<C>>(
         self,
         line: &Line,
         skip_end: bool,
         color: C,
         sink: &mut S,
-    ) -> Result<(), S::Error> {
-        let clip = sink.bounds();
-        self.runs(line, &clip, skip_end, &mut |r: Run| {
-            fill_run(sink, r, color)
-        })
-    }
+    ) -> Result<(), S::Error>;
 }
 
 /// The exact line.
 #[derive(Debug, Clone, Copy)]
 struct Exact;
 
+/// As [`LinePixels`], which a framebuffer walks itself.
 impl RunSource for Exact {
-    fn runs<E>(
-        self,
-        line: &Line,
-        clip: &Rectangle,
-        skip_end: bool,
-        f: &mut impl FnMut(Run) -> Result<(), E>,
-    ) -> Result<(), E> {
-        line.exact_runs(clip, skip_end, f)
-    }
-
     fn draw_thin<C: PixelColor, S: SpanSink<C>>(
         self,
         line: &Line,
@@ -470,15 +448,19 @@ impl RunSource for Exact {
     }
 }
 
+/// As runs.
 impl RunSource for LineAlgorithm {
-    fn runs<E>(
+    fn draw_thin<C: PixelColor, S: SpanSink<C>>(
         self,
         line: &Line,
-        clip: &Rectangle,
         skip_end: bool,
-        f: &mut impl FnMut(Run) -> Result<(), E>,
-    ) -> Result<(), E> {
-        line.runs(self, clip, skip_end, f)
+        color: C,
+        sink: &mut S,
+    ) -> Result<(), S::Error> {
+        let clip = sink.bounds();
+        line.runs(self, &clip, skip_end, &mut |r: Run| {
+            fill_run(sink, r, color)
+        })
     }
 }
 
