@@ -10,15 +10,17 @@
 //! | module | what it holds |
 //! |---|---|
 //! | [`Vertex`] | 20.12 fixed-point positions (12 fractional bits) |
-//! | [`Triangle`], [`FilledTriangle`] | the exact edge-equation triangle rasterizer and its [`Drawable`] |
+//! | [`Triangle`], [`FilledTriangle`] | the exact triangle rasterizer (the long edge and one short edge per row, split at the middle vertex) and its [`Drawable`] |
 //! | [`Span`] | the horizontal runs every filled shape is rasterized into |
+//! | [`SpanSink`], [`SpanDrawable`], [`DrawTargetSink`] | where shapes write their pixels, already clipped: [`Framebuffer`] straight into its rows, any [`DrawTarget`] through [`DrawTargetSink`] |
+//! | `raster` (private) | the one raster core: the wide-integer abstraction and exact orientation, the scan frame, the exact incremental edge (O(1) per row, quotient and remainder), the sink traits |
 //! | [`TriangleAlgorithm`], [`SubpixelPrecision`] | selectable triangle variants (exact edge equations, barycentric bounding-box test, fixed-point edge walking, Bresenham edge walking) and vertex snapping to 0, 4, 8 or 12 subpixel bits, for trading accuracy for speed (measured in `BENCHMARKS.md`) |
 //! | [`line`](mod@line) | [`Line`], [`Polyline`] and their styles: exact Bresenham lines between any `i32` pixels, clipped before stepping (tie rule: the smaller coordinate), emitted as [`Run`]s; [`LineAlgorithm`] variants (DDA, naive); thick lines as two triangles |
 //! | [`Polygon`], [`FilledPolygon`], [`FillRule`] | the exact active-edge-table fill (even-odd and non-zero) with `heapless` storage of a chosen capacity, ear-clipping and fan triangulation, exact simple and convex tests |
 //! | [`shade`], [`GouraudTriangle`] | shading: the rounded average of vertex colours, Gouraud blends within 1 unit per channel (no per-pixel division), interpolated `u16` depth tested against a caller's [`DepthBuffer`](shade::DepthBuffer), each a separate type so flat-only code links none of it |
 //! | [`delaunay`] | Delaunay triangulation of up to `N` points in fixed storage ([`Delaunay`](delaunay::Delaunay)), incremental with Lawson flips, exact integer orientation and in-circle tests over the whole 20.12 range, deterministic on duplicates, collinear and cocircular points |
 //! | [`mesh`] | fixed-point 3D without floats: table sine/cosine, rotation, perspective projection to vertices and depths, an allocation-free latitude/longitude sphere |
-//! | [`framebuffer`] | [`Framebuffer`], an owned const-sized [`DrawTarget`] for Rgb565 (both byte orders), Rgb888, Gray8 and 1-bit |
+//! | [`framebuffer`] | [`Framebuffer`], an owned const-sized [`DrawTarget`] and [`SpanSink`] for Rgb565 (both byte orders), Rgb888, Gray8 and 1-bit, filled with aligned word stores |
 //! | `sim` (feature `sim`) | the host simulator: an overdraw-counting display, PNG export, the scene-file renderer |
 //!
 //! # The sampling rule
