@@ -385,6 +385,21 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
     }
 
     fn fill_solid(&mut self, area: &Rectangle, color: F::Color) -> Result<(), Infallible> {
+        if area.size.height == 1 {
+            // One row, as `DrawTargetSink` sends spans: clipped as a span.
+            let (x, width) = (i64::from(area.top_left.x), i64::from(area.size.width));
+            let x0 = x.max(0);
+            let x1 = (x + width).min(i64::try_from(W).unwrap_or(i64::MAX));
+            let y = area.top_left.y;
+            if let (true, Ok(x_start), Ok(x_end)) = (
+                usize::try_from(y).is_ok_and(|y| y < H) && x0 < x1,
+                i32::try_from(x0),
+                i32::try_from(x1),
+            ) {
+                SpanSink::fill_span(self, Span { y, x_start, x_end }, color)?;
+            }
+            return Ok(());
+        }
         if let Some((xs, ys)) = clip_to(area, &self.bounding_box()) {
             let (rows, span) = self.rows_mut(xs, ys, true);
             for row in rows {

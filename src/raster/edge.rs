@@ -101,8 +101,14 @@ impl<T: Narrow> Edge<T> {
         }
         let one = T::narrow(ONE.into())?;
         let wide = |v: T| T::Double::from(v);
-        let (q, r) = T::div_rem_wide(wide(dx) * wide(one), dy)?;
         let (e0, n) = (start * one - top.1, first - start);
+        // q and r only when the edge is stepped or started below its top:
+        // an edge of one row costs one division.
+        let (q, r) = if first < last || n > T::ZERO {
+            T::div_rem_wide(wide(dx) * wide(one), dy)?
+        } else {
+            (T::ZERO, T::ZERO)
+        };
         // ceil(m / dy) = -floor(-m / dy); the remainder of -m is c dy - m.
         let minus = -(wide(e0) * wide(dx) + wide(n) * wide(r));
         let (f, s) = T::div_rem_wide(minus, dy)?;
