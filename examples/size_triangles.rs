@@ -1,7 +1,7 @@
-//! Firmware for the code-size table in `BENCHMARKS.md`: flat triangles,
-//! drawn through the framebuffer's span sink (`draw_spans`),
-//! only (irregular triangles of four sizes and the scene's mesh) on the
-//! 320 x 240 Rgb565 framebuffer, then the checksum over semihosting. Compare
+//! Firmware for the code-size table in `BENCHMARKS.md`: flat triangles
+//! only (irregular triangles of four sizes and the scene's mesh), drawn
+//! through the span sink (`draw_spans`) of the 320 x 240 Rgb565
+//! framebuffer, then the checksum over semihosting. Compare
 //! its `.text` with `size_baseline` (no drawing) and `firmware` (every
 //! primitive): `bash .ci/codesize`.
 
