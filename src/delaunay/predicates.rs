@@ -32,8 +32,8 @@
 
 use core::cmp::Ordering;
 
-use crate::polygon::predicates::{cross, pt};
-use crate::Vertex;
+use crate::raster::wide;
+use crate::vertex::Vertex;
 
 /// Which way `a -> b -> c` turns, exactly: [`Ordering::Greater`] when the
 /// signed area `(b - a) x (c - a)` is positive (clockwise on the screen,
@@ -56,15 +56,12 @@ use crate::Vertex;
 /// assert_eq!(orientation(v(0, 0), v(5, 5), v(-7, -7)), Ordering::Equal);
 /// ```
 pub fn orientation(a: Vertex, b: Vertex, c: Vertex) -> Ordering {
-    let (u, v) = (relative(b, a), relative(c, a));
-    // Differences below 2^31: products below 2^62, their difference below
-    // 2^63, so `i64` is exact; otherwise `i128` (below 2^65).
-    let small = |p: Delta| p.0.unsigned_abs() < 1 << 31 && p.1.unsigned_abs() < 1 << 31;
-    if small(u) && small(v) {
-        (u.0 * v.1).cmp(&(u.1 * v.0))
-    } else {
-        cross(pt(a), pt(b), pt(c)).cmp(&0)
-    }
+    // The raster core's orientation, on coordinates far below 2^62.
+    let p = |v: Vertex| {
+        let (x, y) = v.raw();
+        (i64::from(x), i64::from(y))
+    };
+    wide::orientation(p(a), p(b), p(c)).cmp(&0)
 }
 
 /// Where `d` lies relative to the circle through `a`, `b` and `c`, exactly,

@@ -13,7 +13,7 @@
 //! iff its centre nudged by `(e, e^2)` has a non-zero winding number
 //! ([`FillRule::NonZero`]) or an odd one ([`FillRule::EvenOdd`]).
 
-pub(crate) mod predicates;
+mod predicates;
 mod scanline;
 mod triangulate;
 

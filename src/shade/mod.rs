@@ -68,7 +68,7 @@ use core::marker::PhantomData;
 
 use embedded_graphics_core::{draw_target::DrawTarget, Drawable};
 
-use crate::{FilledTriangle, Span, Triangle};
+use crate::{raster::wide::orientation, span::Span, triangle::FilledTriangle, triangle::Triangle};
 
 /// `1/2` in 32.32 fixed point, for rounding.
 const HALF: i64 = 1 << 31;
@@ -83,7 +83,7 @@ fn round_div(n: i128, d: i128) -> i128 {
 /// area (module docs).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Frame {
-    p: [(i128, i128); 3],
+    p: [(i64, i64); 3],
     area2: i128,
 }
 
@@ -92,20 +92,19 @@ impl Frame {
     pub(crate) fn new(t: &Triangle) -> Option<Self> {
         let p = t.vertices.map(|v| {
             let (x, y) = v.raw();
-            (i128::from(x), i128::from(y))
+            (i64::from(x), i64::from(y))
         });
-        let area2 = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[1].1 - p[0].1) * (p[2].0 - p[0].0);
+        // Raw coordinates are far below 2^62: exact (raster::wide).
+        let area2 = orientation(p[0], p[1], p[2]);
         (area2 != 0).then_some(Self { p, area2 })
     }
 
     /// `L_1, L_2`: the barycentric coordinates of vertices 1 and 2 at the
     /// centre of pixel `(x, y)`, in 2.60 fixed point, rounded.
     fn lambdas(&self, x: i32, y: i32) -> [i128; 2] {
-        let c = (i128::from(x) * 4096 + 2048, i128::from(y) * 4096 + 2048);
-        let w = |k: usize| {
-            let (a, b) = (self.p[(k + 1) % 3], self.p[(k + 2) % 3]);
-            (a.0 - c.0) * (b.1 - c.1) - (a.1 - c.1) * (b.0 - c.0)
-        };
+        let c = (i64::from(x) * 4096 + 2048, i64::from(y) * 4096 + 2048);
+        // (a - c) x (b - c): the orientation of c, a, b.
+        let w = |k: usize| orientation(c, self.p[(k + 1) % 3], self.p[(k + 2) % 3]);
         [
             round_div(w(1) << 60, self.area2),
             round_div(w(2) << 60, self.area2),
@@ -134,7 +133,7 @@ impl<const N: usize> Linear<N> {
             da[1][n] = a[2] - a[0];
             // d w_k / dx per pixel: 4096 (y_(k+1) - y_(k+2)).
             let num: i128 = (0..3)
-                .map(|k| a[k] * (p[(k + 1) % 3].1 - p[(k + 2) % 3].1))
+                .map(|k| a[k] * i128::from(p[(k + 1) % 3].1 - p[(k + 2) % 3].1))
                 .sum();
             step[n] = i64::try_from(round_div((num * 4096) << 32, frame.area2)).unwrap_or(0);
         }

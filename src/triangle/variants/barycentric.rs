@@ -15,7 +15,7 @@
 use embedded_graphics_core::primitives::Rectangle;
 
 use super::SubpixelPrecision;
-use crate::{clip::Bounds, Span, Vertex};
+use crate::{clip::Bounds, raster::wide::orientation, Span, Vertex};
 
 /// Oriented, reduced edge functions over the scanned rectangle.
 struct Setup {
@@ -56,9 +56,9 @@ fn setup(v: &[Vertex; 3], precision: SubpixelPrecision, clip: &Rectangle) -> Opt
         i128::from(scan.y0 * pixel + half),
     );
     // Setup products in i128: differences reach 2^33 units.
+    let area2 = orientation(p[0], p[1], p[2]);
     let w = |t: (i64, i64)| (i128::from(t.0), i128::from(t.1));
     let [p0, mut p1, mut p2] = p.map(w);
-    let area2 = (p1.0 - p0.0) * (p2.1 - p0.1) - (p1.1 - p0.1) * (p2.0 - p0.0);
     if area2 == 0 {
         return None;
     }
