@@ -200,7 +200,7 @@ fn walk_line<const B: usize>(buffer: &mut [u8], stride: usize, pixels: &LinePixe
     } else {
         (row, s)
     };
-    pixels.walk(start, major, minor, |at| {
+    pixels.walk(start, major, minor, move |at| {
         if let Some(cell) = usize::try_from(at).ok().and_then(|at| cells.get_mut(at)) {
             *cell = px;
         }

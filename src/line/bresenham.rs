@@ -18,34 +18,32 @@ use embedded_graphics_core::geometry::Point;
 /// Calls `emit` with the runs of the visible part `v` of `c`, in order of
 /// growing major coordinate.
 pub(crate) fn runs<E>(
-    c: &Canonical,
-    v: &Visible,
+    p: &LinePixels,
     emit: &mut impl FnMut(Run) -> Result<(), E>,
 ) -> Result<(), E> {
-    match (c.x_major, c.dmajor < 1 << 30) {
-        (true, true) => step::<i32, true, E>(c, v, emit),
-        (true, false) => step::<i64, true, E>(c, v, emit),
-        (false, true) => step::<i32, false, E>(c, v, emit),
-        (false, false) => step::<i64, false, E>(c, v, emit),
+    match (p.x_major, p.dmajor < 1 << 30) {
+        (true, true) => step::<i32, true, E>(p, emit),
+        (true, false) => step::<i64, true, E>(p, emit),
+        (false, true) => step::<i32, false, E>(p, emit),
+        (false, false) => step::<i64, false, E>(p, emit),
     }
 }
 
 #[inline(always)]
 fn step<T: Wide, const X_MAJOR: bool, E>(
-    c: &Canonical,
-    v: &Visible,
+    p: &LinePixels,
     emit: &mut impl FnMut(Run) -> Result<(), E>,
 ) -> Result<(), E> {
     // Within [-2 dmajor, 2 dmajor]: `runs` picks a width that holds them.
     let (Some(two_minor), Some(two_major), Some(mut d)) = (
-        T::narrow(2 * c.dminor),
-        T::narrow(2 * c.dmajor),
-        T::narrow(v.decision),
+        T::narrow(2 * p.dminor),
+        T::narrow(2 * p.dmajor),
+        T::narrow(p.decision),
     ) else {
         return Ok(());
     };
-    let s: i32 = if c.minor_step > 0 { 1 } else { -1 };
-    let (mut major, last, mut minor) = (v.first_major, v.last_major, v.first_minor);
+    let s = p.minor_step;
+    let (mut major, last, mut minor) = (p.first_major, p.last_major, p.first_minor);
     let mut start = major;
     loop {
         if major == last {
@@ -105,12 +103,37 @@ fn step<T: Wide, const X_MAJOR: bool, E>(
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct LinePixels {
-    pub(crate) c: Canonical,
-    pub(crate) v: Visible,
+    /// Whether x is the major axis.
+    x_major: bool,
+    /// +1 or -1: how the minor coordinate moves.
+    minor_step: i32,
+    /// The first and last major coordinate, and the first minor one.
+    first_major: i32,
+    last_major: i32,
+    first_minor: i32,
+    /// The decision variable at the first pixel, and the line's whole
+    /// major and minor extents (`0 <= dminor <= dmajor < 2^32`).
+    decision: i64,
+    dmajor: i64,
+    dminor: i64,
 }
 
 impl LinePixels {
-    /// The number of pixels.
+    /// The visible part `v` of the canonical line `c`.
+    pub(crate) fn new(c: &Canonical, v: Visible) -> Self {
+        Self {
+            x_major: c.x_major,
+            minor_step: if c.minor_step > 0 { 1 } else { -1 },
+            first_major: v.first_major,
+            last_major: v.last_major,
+            first_minor: v.first_minor,
+            decision: v.decision,
+            dmajor: c.dmajor,
+            dminor: c.dminor,
+        }
+    }
+
+    /// The number of pixels (left to iterate).
     ///
     /// # Examples
     ///
@@ -123,13 +146,14 @@ impl LinePixels {
     /// assert_eq!(pixels.len(), 8);
     /// ```
     pub fn len(&self) -> u32 {
-        self.v
-            .last_major
-            .abs_diff(self.v.first_major)
-            .saturating_add(1)
+        if self.first_major > self.last_major {
+            return 0;
+        }
+        self.last_major.abs_diff(self.first_major).saturating_add(1)
     }
 
-    /// Always `false`: an empty line has no `LinePixels`.
+    /// Whether no pixel is left (never for a line just made: an empty
+    /// line has no `LinePixels`).
     ///
     /// # Examples
     ///
@@ -138,10 +162,13 @@ impl LinePixels {
     /// use embedded_raster::Line;
     ///
     /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
-    /// assert!(!Line::new(Point::zero(), Point::zero()).pixels(&clip).unwrap().is_empty());
+    /// let mut pixels = Line::new(Point::zero(), Point::zero()).pixels(&clip).unwrap();
+    /// assert!(!pixels.is_empty());
+    /// assert_eq!(pixels.next(), Some(Point::zero()));
+    /// assert!(pixels.is_empty());
     /// ```
     pub fn is_empty(&self) -> bool {
-        false
+        self.first_major > self.last_major
     }
 
     /// Calls `f` with the same pixels as horizontal runs (an x-major line)
@@ -166,18 +193,18 @@ impl LinePixels {
     /// # Ok::<(), Infallible>(())
     /// ```
     pub fn for_each_run<E>(&self, mut f: impl FnMut(Run) -> Result<(), E>) -> Result<(), E> {
-        runs(&self.c, &self.v, &mut f)
+        runs(self, &mut f)
     }
 
     /// Whether the line is x-major and moves along its minor axis less
     /// than once per four pixels, so that its runs are long spans.
     pub(crate) fn has_long_spans(&self) -> bool {
-        self.c.x_major && self.c.dminor.saturating_mul(4) < self.c.dmajor
+        self.x_major && self.dminor.saturating_mul(4) < self.dmajor
     }
 
     /// Whether the line is x-major (one pixel per column).
     pub(crate) fn x_major(&self) -> bool {
-        self.c.x_major
+        self.x_major
     }
 
     /// Walks the pixels with an index that moves by `major` per pixel and
@@ -187,7 +214,7 @@ impl LinePixels {
     /// narrowest width that holds it.
     #[inline(always)]
     pub(crate) fn walk(&self, first: isize, major: isize, minor: isize, plot: impl FnMut(isize)) {
-        if self.c.dmajor < 1 << 30 {
+        if self.dmajor < 1 << 30 {
             self.walk_in::<i32>(first, major, minor, plot);
         } else {
             self.walk_in::<i64>(first, major, minor, plot);
@@ -204,41 +231,37 @@ impl LinePixels {
     ) {
         // Within [-2 dmajor, 2 dmajor]: `walk` picks a width that holds them.
         let (Some(two_minor), Some(two_major), Some(mut d)) = (
-            T::narrow(2 * self.c.dminor),
-            T::narrow(2 * self.c.dmajor),
-            T::narrow(self.v.decision),
+            T::narrow(2 * self.dminor),
+            T::narrow(2 * self.dmajor),
+            T::narrow(self.decision),
         ) else {
             return;
         };
+        // One step along both axes where the line moves, else along the
+        // major one: one select per pixel.
+        let diagonal = major + minor;
         let mut at = first;
         plot(at);
         for _ in 1..self.len() {
-            if d >= T::ZERO {
-                d = d - two_major;
-                at += minor;
-            }
-            d = d + two_minor;
-            at += major;
+            let moves = d >= T::ZERO;
+            d = d + (two_minor - if moves { two_major } else { T::ZERO });
+            at += if moves { diagonal } else { major };
             plot(at);
         }
     }
 
     /// The first pixel.
     pub(crate) fn first(&self) -> Point {
-        if self.c.x_major {
-            Point::new(self.v.first_major, self.v.first_minor)
+        if self.x_major {
+            Point::new(self.first_major, self.first_minor)
         } else {
-            Point::new(self.v.first_minor, self.v.first_major)
+            Point::new(self.first_minor, self.first_major)
         }
     }
 
     /// +1 or -1: how the minor coordinate moves.
     pub(crate) fn minor_step(&self) -> i32 {
-        if self.c.minor_step > 0 {
-            1
-        } else {
-            -1
-        }
+        self.minor_step
     }
 }
 
@@ -247,22 +270,22 @@ impl Iterator for LinePixels {
     type Item = Point;
 
     fn next(&mut self) -> Option<Point> {
-        if self.v.first_major > self.v.last_major {
+        if self.first_major > self.last_major {
             return None;
         }
         let p = self.first();
-        if self.v.first_major < self.v.last_major {
-            let d = self.v.decision;
+        if self.first_major < self.last_major {
+            let d = self.decision;
             let moves = d >= 0;
             // |d| <= 2 dmajor < 2^33 throughout.
-            self.v.decision = d + 2 * self.c.dminor - if moves { 2 * self.c.dmajor } else { 0 };
+            self.decision = d + 2 * self.dminor - if moves { 2 * self.dmajor } else { 0 };
             if moves {
-                self.v.first_minor += self.minor_step();
+                self.first_minor += self.minor_step;
             }
-            self.v.first_major += 1;
+            self.first_major += 1;
         } else {
             // Past the end, without stepping beyond i32.
-            self.v.last_major -= 1;
+            self.last_major -= 1;
         }
         Some(p)
     }

@@ -394,8 +394,7 @@ impl Line {
     /// `skip_end`.
     fn exact_pixels(&self, clip: &Rectangle, skip_end: bool) -> Option<LinePixels> {
         let c = Canonical::new(self.start, self.end);
-        let v = c.visible(clip, skip_end)?;
-        Some(LinePixels { c, v })
+        Some(LinePixels::new(&c, c.visible(clip, skip_end)?))
     }
 
     /// The exact (Bresenham) runs, without the pixel at `end` if `skip_end`.
@@ -407,7 +406,7 @@ impl Line {
     ) -> Result<(), E> {
         let c = Canonical::new(self.start, self.end);
         match c.visible(clip, skip_end) {
-            Some(v) => bresenham::runs(&c, &v, f),
+            Some(v) => bresenham::runs(&LinePixels::new(&c, v), f),
             None => Ok(()),
         }
     }
