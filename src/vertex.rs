@@ -3,7 +3,7 @@
 use embedded_graphics_core::geometry::Point;
 use fixed::{traits::ToFixed, types::I20F12};
 
-use crate::CoordinateOutOfRange;
+use crate::error::CoordinateOutOfRange;
 
 /// Number of fractional bits in a vertex coordinate.
 pub const SUBPIXEL_BITS: u32 = 12;

@@ -34,7 +34,7 @@
 use core::cmp::Ordering;
 
 use super::predicates::{in_circle, orientation};
-use crate::Vertex;
+use crate::vertex::Vertex;
 
 /// The vertex at infinity.
 pub(crate) const GHOST: u16 = u16::MAX;

@@ -80,7 +80,7 @@ mod predicates;
 use core::cmp::Ordering;
 use core::fmt;
 
-use crate::{Triangle, Vertex};
+use crate::{triangle::Triangle, vertex::Vertex};
 use build::{Builder, Face};
 pub use predicates::{in_circle, orientation};
 

@@ -25,7 +25,7 @@
 
 use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 
-use crate::{clip::Bounds, vertex::ONE, Triangle, Vertex};
+use crate::{clip::Bounds, triangle::Triangle, vertex::Vertex, vertex::ONE};
 
 /// Widths above this are drawn as this width.
 pub(crate) const MAX_WIDTH: u32 = 65535;

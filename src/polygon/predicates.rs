@@ -1,7 +1,7 @@
 //! Exact geometric predicates on 20.12 vertices, in `i128` (coordinate
 //! differences reach 2^32, their products 2^64).
 
-use crate::Vertex;
+use crate::vertex::Vertex;
 
 pub(crate) type P = (i128, i128);
 

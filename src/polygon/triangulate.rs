@@ -3,7 +3,7 @@
 use heapless::Vec;
 
 use super::predicates::{area2, cross, in_closed_triangle, is_convex, is_simple, pt};
-use crate::{Triangle, Vertex};
+use crate::{triangle::Triangle, vertex::Vertex};
 
 /// Why a polygon could not be triangulated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

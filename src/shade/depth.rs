@@ -10,7 +10,7 @@ use embedded_graphics_core::{
 };
 
 use super::{round_fixed, Frame, GouraudSetup, GouraudTriangle, Linear, ShadeColor};
-use crate::{clip::Bounds, FilledTriangle, Span};
+use crate::{clip::Bounds, span::Span, triangle::FilledTriangle};
 
 /// The depth a cleared [`DepthBuffer`] holds: farther than anything drawn
 /// (a pixel at depth `FAR` never passes the test).

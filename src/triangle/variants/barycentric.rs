@@ -15,7 +15,7 @@
 use embedded_graphics_core::primitives::Rectangle;
 
 use super::SubpixelPrecision;
-use crate::{clip::Bounds, raster::wide::orientation, Span, Vertex};
+use crate::{clip::Bounds, raster::wide::orientation, span::Span, vertex::Vertex};
 
 /// Oriented, reduced edge functions over the scanned rectangle.
 struct Setup {

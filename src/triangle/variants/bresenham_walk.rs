@@ -10,7 +10,7 @@
 
 use embedded_graphics_core::primitives::Rectangle;
 
-use crate::{clip::Bounds, Span, Vertex};
+use crate::{clip::Bounds, span::Span, vertex::Vertex};
 
 /// Bresenham state of one non-horizontal edge.
 struct Edge {

@@ -16,7 +16,7 @@ use core::fmt;
 
 use embedded_graphics_core::primitives::Rectangle;
 
-use crate::{Span, Vertex};
+use crate::{span::Span, vertex::Vertex};
 
 /// How a [`Triangle`](crate::Triangle) is turned into spans.
 ///

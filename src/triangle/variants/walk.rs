@@ -18,7 +18,7 @@
 
 use embedded_graphics_core::primitives::Rectangle;
 
-use crate::{clip::Bounds, Span, Vertex};
+use crate::{clip::Bounds, span::Span, vertex::Vertex};
 
 /// Fractional bits of x positions and slopes.
 const FRAC: u32 = 16;
