@@ -321,6 +321,10 @@ proptest! {
     /// A fan lights each pixel of its outline exactly once.
     #[test]
     fn fans_have_no_gaps_and_no_overdraw((tris, ring) in fan()) {
+        // Snapping a small ring to the half-pixel grid can reorder its
+        // points around the centre; then the fan is not a partition of the
+        // ring (found by a 400,000-case run: a triangle turned over).
+        prop_assume!(turns_one_way(&tris));
         let (cx, cy) = tris[0].vertices[0].raw();
         let (x0, y0) = ((i64::from(cx) >> 12) - 44, (i64::from(cy) >> 12) - 44);
         let mut g = Grid::new(x0, y0, 88, 88);
@@ -331,6 +335,20 @@ proptest! {
         let d = g.diff(&want);
         prop_assert!(d.is_empty(), "{} pixels differ: {:?}", d.len(), &d[..d.len().min(8)]);
     }
+}
+
+/// Whether every triangle has a non-zero area of the same sign: the fan
+/// of a ring star-shaped around its centre.
+fn turns_one_way(tris: &[Triangle]) -> bool {
+    let sign = |t: &Triangle| {
+        let p = t.vertices.map(|v| {
+            let (x, y) = v.raw();
+            (i128::from(x), i128::from(y))
+        });
+        ((p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[1].1 - p[0].1) * (p[2].0 - p[0].0)).signum()
+    };
+    let first = tris.first().map_or(0, sign);
+    first != 0 && tris.iter().all(|t| sign(t) == first)
 }
 
 /// A display that accepts only `fill_solid`, to prove flat fills never go
