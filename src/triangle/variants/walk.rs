@@ -18,7 +18,7 @@
 
 use embedded_graphics_core::primitives::Rectangle;
 
-use crate::{clip::Bounds, span::Span, vertex::Vertex};
+use crate::{clip::Bounds, raster::wide::orientation, span::Span, vertex::Vertex};
 
 /// Fractional bits of x positions and slopes.
 const FRAC: u32 = 16;
@@ -72,15 +72,8 @@ pub(super) fn edge_walk_spans<E>(
     });
     p.sort_unstable_by_key(|t| (t.1, t.0));
     let [top, mid, bot] = p;
-    // Differences reach 2^32 raw: the products need i128 unless every
-    // difference is under 2^31 (then each product is under 2^62).
-    let d = [mid.0 - top.0, bot.1 - top.1, mid.1 - top.1, bot.0 - top.0];
-    let cross = if d.iter().all(|v| v.unsigned_abs() < 1 << 31) {
-        (d[0] * d[1] - d[2] * d[3]).signum()
-    } else {
-        let w = d.map(i128::from);
-        (w[0] * w[1] - w[2] * w[3]).signum() as i64
-    };
+    // The raster core's orientation: raw coordinates are far below 2^62.
+    let cross = orientation(top, mid, bot);
     if cross == 0 {
         return Ok(());
     }
