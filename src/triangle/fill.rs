@@ -63,17 +63,19 @@ fn relative<T: Wide>(frame: &Frame, v: &[Vertex; 3]) -> Option<[(T, T); 3]> {
 }
 
 /// Sorts three vertices by `y`.
+///
+/// A network of three compare-exchanges written as selects: the order of
+/// random triangles' corners is unpredictable, and a mispredicted branch
+/// costs more than the whole exchange.
 fn sort_by_y(v: &mut [Vertex; 3]) {
-    let y = |v: &Vertex| v.raw().1;
-    if y(&v[1]) < y(&v[0]) {
-        v.swap(0, 1);
-    }
-    if y(&v[2]) < y(&v[1]) {
-        v.swap(1, 2);
-        if y(&v[1]) < y(&v[0]) {
-            v.swap(0, 1);
-        }
-    }
+    let exchange = |a: Vertex, b: Vertex| {
+        let swap = b.raw().1 < a.raw().1;
+        (if swap { b } else { a }, if swap { a } else { b })
+    };
+    let (a, b) = exchange(v[0], v[1]);
+    let (b, c) = exchange(b, v[2]);
+    let (a, b) = exchange(a, b);
+    *v = [a, b, c];
 }
 
 /// Walks the rows of the frame the triangle `p` (relative, sorted by `y`)
