@@ -1,22 +1,7 @@
 //! The cost model of the `render` tool: how many pixels each command can
 //! touch, known before anything is drawn.
 //!
-//! Rendering time is about the pixels the rasterizers visit, so a scene's
-//! work is estimated as the sum over its commands of an upper bound on the
-//! pixels each can touch inside the `W x H` target:
-//!
-//! | command | work |
-//! |---|---|
-//! | `clear` | `W H` |
-//! | `rect` | the rectangle's area clipped to the target |
-//! | `tri`, `gtri`, `poly` | the vertices' bounding box (whole pixels) clipped to the target |
-//! | `line` | the major-axis extent of the line's bounding box clipped to the target (one pixel per visible step) |
-//! | `polyline` | the sum over its segments, as `line` |
-//!
-//! Every bound is at most `W H <= 2^24` per command, so a sum over any
-//! number of commands a file can hold fits `u64`. Besides pixels, each
-//! command costs a constant plus its vertices, bounded by the file's
-//! length.
+//! The model is documented on [`Scene::pixel_work`].
 
 use embedded_graphics_core::{geometry::Point, prelude::*, primitives::Rectangle};
 
@@ -26,6 +11,23 @@ use crate::Vertex;
 impl Scene {
     /// The scene's estimated work: the sum of [`Command::pixel_work`] over
     /// its commands (the `size` command's black costs nothing).
+    ///
+    /// Rendering time is about the pixels the rasterizers visit, so each
+    /// command counts an upper bound on the pixels it can touch inside the
+    /// `W x H` target:
+    ///
+    /// | command | work |
+    /// |---|---|
+    /// | `clear` | `W H` |
+    /// | `rect` | the rectangle's area clipped to the target |
+    /// | `tri`, `gtri`, `poly` | the vertices' bounding box (whole pixels) clipped to the target |
+    /// | `line` | the major-axis extent of the line's bounding box clipped to the target (one pixel per visible step) |
+    /// | `polyline` | the sum over its segments, as `line` |
+    ///
+    /// Every bound is at most `W H <= 2^24` per command, so the sum over
+    /// any number of commands a file can hold fits `u64`. Besides pixels,
+    /// each command costs a constant plus its vertices, bounded by the
+    /// file's length.
     ///
     /// # Examples
     ///
@@ -49,7 +51,7 @@ impl Scene {
 
 impl Command {
     /// An upper bound on the pixels this command can touch on a target of
-    /// `size`: the [module](self)'s cost model. At most `width * height`.
+    /// `size`: the cost model of [`Scene::pixel_work`]. At most `width * height`.
     ///
     /// # Examples
     ///
