@@ -65,10 +65,9 @@ impl Command {
     /// # Ok::<(), embedded_raster::sim::SceneError>(())
     /// ```
     pub fn pixel_work(&self, size: Size) -> u64 {
-        let target = Rectangle::new(Point::zero(), size);
         match self {
-            Command::Clear(_) => area(&target),
-            Command::Rect(r, _) => area(&target.intersection(r)),
+            Command::Clear(_) => u64::from(size.width) * u64::from(size.height),
+            Command::Rect(r, _) => rect_work(r, size),
             Command::Tri(t, _) | Command::Gtri(t, _) => box_work(&t.vertices, size),
             Command::Poly(vertices, ..) => box_work(vertices, size),
             Command::Line(l, _) => line_work(l.start, l.end, size),
@@ -79,8 +78,13 @@ impl Command {
     }
 }
 
-fn area(r: &Rectangle) -> u64 {
-    u64::from(r.size.width) * u64::from(r.size.height)
+/// The rectangle's area clipped to the target, in `i64` (a rectangle may
+/// reach past `i32::MAX`, where `Rectangle::intersection` would overflow).
+fn rect_work(r: &Rectangle, size: Size) -> u64 {
+    let (x, y) = (i64::from(r.top_left.x), i64::from(r.top_left.y));
+    let w = clipped(x, x + i64::from(r.size.width), size.width);
+    let h = clipped(y, y + i64::from(r.size.height), size.height);
+    w * h
 }
 
 /// `[lo, hi)` clipped to `[0, side)`, as a length.

@@ -405,3 +405,14 @@ fn issue_12_max_pixels() {
         );
     }
 }
+
+/// Found by `tests/fuzz.rs`: the cost estimate of a rectangle reaching past
+/// `i32::MAX` overflowed (`Rectangle::intersection`).
+#[test]
+fn issue_12_cost_of_a_rectangle_past_i32_max() {
+    let scene = embedded_raster::sim::parse_scene(
+        "size 8 8\nrect 2147483647 0 2147483647 8 #ffffff\nrect -4 -4 2147483647 6 #ffffff\n",
+    )
+    .unwrap();
+    assert_eq!(scene.pixel_work(), 16);
+}
