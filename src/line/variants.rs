@@ -78,13 +78,7 @@ fn steps(
 ) -> Option<(Offset, i64, i64)> {
     let offset = Offset::new(algorithm, c)?;
     let (lo, hi) = c.major_steps(clip, skip_end)?;
-    let (_, (min0, min1)) = c.clip_ranges(clip);
-    // The clip's minor range as offsets from `minor0`.
-    let (m_lo, m_hi) = if c.minor_step > 0 {
-        (min0 - c.minor0, min1 - c.minor0)
-    } else {
-        (c.minor0 - min1, c.minor0 - min0)
-    };
+    let (m_lo, m_hi) = c.minor_offsets(clip);
     let (lo, hi) = visible(lo, hi, m_lo, m_hi, |k| offset.at(k))?;
     Some((offset, lo, hi))
 }
