@@ -108,12 +108,12 @@ fn vertex(r: &mut Rng, fx: i64, fy: i64) -> Vertex {
     Vertex::from_raw(raw(r, fx), raw(r, fy))
 }
 
-/// Draws with `draw` on a `SimDisplay` and on a `Framebuffer` of every
+/// Draws `target` on a `SimDisplay` and on a `Framebuffer` of every
 /// format, 16 x 16, and checks that they agree and nothing lands outside.
 /// Returns the display's lit grid (write count > 0).
-fn on_every_target(draw: &dyn Fn(&mut dyn FnMut(Target))) -> Grid {
+fn on_every_target(target: &Target) -> Grid {
     let mut display = SimDisplay::new(16, 16, Rgb888::BLACK);
-    draw(&mut |t| t.sim(&mut display));
+    target.sim(&mut display);
     assert_eq!(display.out_of_bounds_writes(), 0);
     let mut lit = Grid::new(0, 0, 16, 16);
     for j in 0..16 {
@@ -126,16 +126,9 @@ fn on_every_target(draw: &dyn Fn(&mut dyn FnMut(Target))) -> Grid {
     macro_rules! check {
         ($f:ty, $c:ty, $on:expr) => {{
             let mut fb = Framebuffer::<$f, 16, 16, { buffer_size::<$f>(16, 16) }>::new();
-            let mut sim = SimDisplay::new(
-                16,
-                16,
-                <$c>::from(
-                    Framebuffer::<$f, 16, 16, { buffer_size::<$f>(16, 16) }>::new()
-                        .pixel(Point::zero())
-                        .unwrap(),
-                ),
-            );
-            draw(&mut |t| t.framebuffer(&mut fb, &mut sim, $on));
+            let background: $c = fb.pixel(Point::zero()).unwrap();
+            let mut sim = SimDisplay::new(16, 16, background);
+            target.framebuffer(&mut fb, &mut sim, $on);
             assert_eq!(sim.out_of_bounds_writes(), 0);
             for j in 0..16 {
                 for i in 0..16 {
@@ -227,7 +220,7 @@ fn fuzz_triangles() {
             &t,
         );
         // Every target at the origin.
-        let lit = on_every_target(&|f| f(Target::Tri(t)));
+        let lit = on_every_target(&Target::Tri(t));
         assert_same(&lit, &reference_triangle(&t, 0, 0, 16, 16), &t);
         // Gouraud: the same pixels.
         let mut d = SimDisplay::new(16, 16, Rgb888::BLACK);
@@ -266,7 +259,7 @@ fn fuzz_polygons() {
             poly.for_each_span(rule, clip, f)
         });
         assert_same(&got, &reference_fill(&v, even_odd, x0, y0, 8, 8), &v);
-        let lit = on_every_target(&|f| f(Target::Poly(v.clone(), rule)));
+        let lit = on_every_target(&Target::Poly(v.clone(), rule));
         assert_same(&lit, &reference_fill(&v, even_odd, 0, 0, 16, 16), &v);
     }
     println!("fuzz_polygons: {n} inputs");
@@ -289,10 +282,10 @@ fn fuzz_lines_and_polylines() {
             r.below(64) as u32
         });
         let line = Line::new(point(&mut r), point(&mut r));
-        on_every_target(&|f| f(Target::Line(line, a, width)));
+        on_every_target(&Target::Line(line, a, width));
         let len = 2 + r.below(5) as usize;
         let points: Vec<Point> = (0..len).map(|_| point(&mut r)).collect();
-        on_every_target(&|f| f(Target::Polyline(points.clone(), a, width)));
+        on_every_target(&Target::Polyline(points, a, width));
     }
     println!("fuzz_lines_and_polylines: {n} inputs (a line and a polyline each)");
 }
