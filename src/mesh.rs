@@ -381,11 +381,15 @@ pub fn sphere(
         });
     }
     let (r, s) = (u32::from(rings), u32::from(segments));
+    // Sines and cosines are within ±ONE: the rounded product is too, so
+    // `as` is exact.
     let mul = |a: i32, b: i32| ((i64::from(a) * i64::from(b) + (1 << 14)) >> 15) as i32;
     vertices[0] = Vec3::new(0, ONE, 0);
     vertices[nv - 1] = Vec3::new(0, -ONE, 0);
     for i in 1..r {
         // Polar angle i / rings of a half turn.
+        // `i < r` and `j < s <= 65535`: the angles are below 32768 and
+        // 65536 (and `j * 65536 < 2^32`), so `as u16` is exact.
         let (sin_t, cos_t) = sin_cos((i * 32768 / r) as u16);
         for j in 0..s {
             let (sin_p, cos_p) = sin_cos((j * 65536 / s) as u16);

@@ -21,6 +21,7 @@ use std::ffi::OsString;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::prelude::rust_2021::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::{format, writeln};
 
 use super::{parse_scene, render_scene_with};
@@ -383,8 +384,11 @@ fn write_all_or_nothing(files: &[(&Path, Vec<u8>)]) -> Result<(), String> {
     Ok(())
 }
 
-/// `DIR/.NAME.render-PID.tmp` for `DIR/NAME`.
+/// `DIR/.NAME.render-PID-N.tmp` for `DIR/NAME`, `N` counting the calls in
+/// this process (so that runs in threads of one process never share one).
 fn temp_name(path: &Path) -> Option<PathBuf> {
+    static NEXT: AtomicUsize = AtomicUsize::new(0);
     let name = path.file_name()?.to_string_lossy();
-    Some(path.with_file_name(format!(".{name}.render-{}.tmp", std::process::id())))
+    let n = NEXT.fetch_add(1, Ordering::Relaxed);
+    Some(path.with_file_name(format!(".{name}.render-{}-{n}.tmp", std::process::id())))
 }
