@@ -5,6 +5,16 @@
 //! Everything is integer: positions and matrix entries are Q15 (`32768` is
 //! 1.0), angles are `u16` fractions of a turn (`65536` is a full turn), no
 //! floating point and no `libm`.
+//!
+//! # Ranges
+//!
+//! Every function takes any value of its argument types without panicking
+//! or wrapping: products are formed in `i64`/`i128` where they cannot
+//! overflow, and a result that does not fit its `i32` is saturated
+//! ([`Vec3::dot`], [`Rotation::apply`]) or `None`
+//! ([`Vec3::checked_dot`], [`Rotation::checked_apply`],
+//! [`Camera::project`]). Each function's docs give the range in which its
+//! result is exact.
 
 use crate::Vertex;
 
@@ -37,7 +47,8 @@ fn quarter(w: u32) -> i32 {
     a + (((b - a) * f + 64) >> 7)
 }
 
-/// Sine and cosine of `angle` (in units of a turn / 65536) in Q15.
+/// Sine and cosine of `angle` (in units of a turn / 65536, any `u16`) in
+/// Q15, both within `±ONE`.
 ///
 /// Linear interpolation in a 129-entry quarter-wave table: each result is
 /// within 2 units (`2^-14`) of the exact value (interpolation error at most
@@ -85,7 +96,16 @@ impl Vec3 {
         Self { x, y, z }
     }
 
-    /// The dot product, in Q15 (rounded), computed in `i64`.
+    /// The dot product, in Q15, rounded to nearest (ties up), saturated to
+    /// `i32`.
+    ///
+    /// Any components are accepted: the sum of products is exact (in
+    /// `i128`). The result is exact when it fits `i32`, which is always the
+    /// case for components within `±2^22` (then `|d| <= 3 * 2^44 / 2^15 <
+    /// 2^31`), or whenever one vector has length at most [`ONE`] and the
+    /// other components within `±2^30`. Otherwise it saturates at
+    /// `i32::MIN` or `i32::MAX`; [`checked_dot`](Self::checked_dot) says
+    /// when.
     ///
     /// # Examples
     ///
@@ -94,20 +114,57 @@ impl Vec3 {
     ///
     /// let half = Vec3::new(ONE / 2, 0, 0);
     /// assert_eq!(half.dot(Vec3::new(ONE, ONE, 0)), ONE / 2);
+    /// let big = Vec3::new(1 << 25, 1 << 25, 0); // 2^36 in Q15: too big
+    /// assert_eq!(big.dot(big), i32::MAX);
     /// ```
     pub fn dot(self, o: Self) -> i32 {
-        let d = i64::from(self.x) * i64::from(o.x)
-            + i64::from(self.y) * i64::from(o.y)
-            + i64::from(self.z) * i64::from(o.z);
-        ((d + (1 << 14)) >> 15) as i32
+        let d = self.wide_dot(o);
+        // Saturating: the clamped value fits, so the conversion cannot fail.
+        i32::try_from(d.clamp(i32::MIN.into(), i32::MAX.into())).unwrap_or_default()
+    }
+
+    /// The dot product as [`dot`](Self::dot), or `None` if the rounded
+    /// result does not fit `i32`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::mesh::{Vec3, ONE};
+    ///
+    /// let v = Vec3::new(ONE, -ONE, 2 * ONE);
+    /// assert_eq!(v.checked_dot(v), Some(6 * ONE));
+    /// let min = Vec3::new(i32::MIN, i32::MIN, i32::MIN);
+    /// assert_eq!(min.checked_dot(min), None);
+    /// ```
+    pub fn checked_dot(self, o: Self) -> Option<i32> {
+        i32::try_from(self.wide_dot(o)).ok()
+    }
+
+    /// The rounded Q15 dot product, exact: each product is below `2^62` in
+    /// magnitude, the sum below `3 * 2^62 < 2^127`.
+    fn wide_dot(self, o: Self) -> i128 {
+        let p = |a: i32, b: i32| i128::from(a) * i128::from(b);
+        let d = p(self.x, o.x) + p(self.y, o.y) + p(self.z, o.z);
+        (d + (1 << 14)) >> 15
     }
 }
 
 /// A rotation matrix in Q15.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::mesh::{Rotation, Vec3, ONE};
+///
+/// let swap = Rotation { m: [[0, ONE, 0], [ONE, 0, 0], [0, 0, ONE]] };
+/// assert_eq!(swap.apply(Vec3::new(1, 2, 3)), Vec3::new(2, 1, 3));
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Rotation {
-    /// Rows of the matrix.
+    /// Rows of the matrix, Q15. [`Rotation::new`] makes entries within
+    /// `±ONE` and rows of length `ONE` (up to rounding); any entries are
+    /// accepted by [`apply`](Self::apply).
     pub m: [[i32; 3]; 3],
 }
 
@@ -126,6 +183,8 @@ impl Rotation {
     pub fn new(yaw: u16, pitch: u16) -> Self {
         let (sy, cy) = sin_cos(yaw);
         let (sp, cp) = sin_cos(pitch);
+        // Sines and cosines lie within ±ONE = ±2^15, so each product is
+        // within ±2^30 and the rounded quotient within ±2^15: `as` is exact.
         let mul = |a: i32, b: i32| ((i64::from(a) * i64::from(b) + (1 << 14)) >> 15) as i32;
         // Rx(pitch) * Ry(yaw).
         Self {
@@ -137,10 +196,47 @@ impl Rotation {
         }
     }
 
-    /// The rotated vector, rounded to Q15.
+    /// The rotated vector, each component rounded as by [`Vec3::dot`] and
+    /// saturated to `i32`.
+    ///
+    /// Any vector is accepted. For a rotation made by [`new`](Self::new)
+    /// and components within `±2^30` the result is exact (no saturation):
+    /// each row's entries sum to at most `sqrt(3) ONE + 10` in magnitude
+    /// (the exact rotation's `sqrt(3) ONE`, plus [`sin_cos`]'s error of 2
+    /// units per factor and 1/2 per rounded product), so a component is at
+    /// most `2^30 (sqrt(3) + 2^-11) < 2^31`. Outside that
+    /// range, use [`checked_apply`](Self::checked_apply) to detect
+    /// saturation.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::mesh::{Rotation, Vec3, ONE, QUARTER_TURN};
+    ///
+    /// let r = Rotation::new(QUARTER_TURN / 2, 0); // 45 degrees about y
+    /// let v = Vec3::new(i32::MAX, 0, i32::MAX);
+    /// assert_eq!(r.apply(v).x, i32::MAX); // sqrt(2) i32::MAX, saturated
+    /// ```
     pub fn apply(&self, v: Vec3) -> Vec3 {
         let row = |r: [i32; 3]| Vec3::new(r[0], r[1], r[2]).dot(v);
         Vec3::new(row(self.m[0]), row(self.m[1]), row(self.m[2]))
+    }
+
+    /// The rotated vector as [`apply`](Self::apply), or `None` if a
+    /// component does not fit `i32`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::mesh::{Rotation, Vec3, ONE, QUARTER_TURN};
+    ///
+    /// let r = Rotation::new(QUARTER_TURN / 2, 0);
+    /// assert!(r.checked_apply(Vec3::new(1 << 30, 0, 1 << 30)).is_some());
+    /// assert_eq!(r.checked_apply(Vec3::new(i32::MAX, 0, i32::MAX)), None);
+    /// ```
+    pub fn checked_apply(&self, v: Vec3) -> Option<Vec3> {
+        let row = |r: [i32; 3]| Vec3::new(r[0], r[1], r[2]).checked_dot(v);
+        Some(Vec3::new(row(self.m[0])?, row(self.m[1])?, row(self.m[2])?))
     }
 }
 
@@ -167,6 +263,11 @@ impl Camera {
     /// in `1 / z`, so interpolating it linearly across a projected triangle
     /// is exact (perspective-correct depth). `None` if `z <= 0` or the
     /// position is outside the 20.12 range.
+    ///
+    /// Every field and point may be any `i32`: the position is computed in
+    /// `i128` (`|focal 4096 x| < 2^75`) and checked into `i32`; the depth
+    /// likewise (`|65534 far (z - near)| < 2^80`). Depth is 0 unless
+    /// `0 < near < far`.
     ///
     /// # Examples
     ///
@@ -280,11 +381,15 @@ pub fn sphere(
         });
     }
     let (r, s) = (u32::from(rings), u32::from(segments));
+    // Sines and cosines are within ±ONE: the rounded product is too, so
+    // `as` is exact.
     let mul = |a: i32, b: i32| ((i64::from(a) * i64::from(b) + (1 << 14)) >> 15) as i32;
     vertices[0] = Vec3::new(0, ONE, 0);
     vertices[nv - 1] = Vec3::new(0, -ONE, 0);
     for i in 1..r {
         // Polar angle i / rings of a half turn.
+        // `i < r` and `j < s <= 65535`: the angles are below 32768 and
+        // 65536 (and `j * 65536 < 2^32`), so `as u16` is exact.
         let (sin_t, cos_t) = sin_cos((i * 32768 / r) as u16);
         for j in 0..s {
             let (sin_p, cos_p) = sin_cos((j * 65536 / s) as u16);

@@ -558,3 +558,99 @@ proptest! {
         prop_assert_eq!(listed_sorted, want);
     }
 }
+
+/// The pixel `algorithm` lights at major coordinate `t`, if any: the line
+/// clipped to the one column (row) at `t`.
+fn variant_at(line: Line, algorithm: LineAlgorithm, t: i64) -> Option<i64> {
+    let (x_major, _) = ideal_minor(line.start, line.end, 0);
+    let t = i32::try_from(t).unwrap();
+    let clip = if x_major {
+        Rectangle::new(Point::new(t, i32::MIN), Size::new(1, u32::MAX))
+    } else {
+        Rectangle::new(Point::new(i32::MIN, t), Size::new(u32::MAX, 1))
+    };
+    let mut got = None;
+    line.for_each_run_with(algorithm, &clip, |r: Run| {
+        assert_eq!((r.len, got), (1, None), "{line:?} at {t}");
+        got = Some(i64::from(if x_major { r.start.y } else { r.start.x }));
+        Ok::<(), ()>(())
+    })
+    .unwrap();
+    got
+}
+
+/// The variants' largest distance from the exact line, by the line's major
+/// extent, over long lines up to the whole `i32` range (issue 12, item 4:
+/// the README claimed at most 1 px, measured only to 4,096 px): the figures
+/// in `LineAlgorithm`'s docs. Each line is sampled at random steps, at its
+/// ends, and at steps just past multiples of 256 (where the naive line's
+/// `f32` step index rounds furthest). `LINE_ERROR_LINES` sets the number of
+/// lines per length class (default 300); run with `--nocapture` for the
+/// table.
+#[test]
+fn variant_error_on_long_lines() {
+    let lines: u64 = std::env::var("LINE_ERROR_LINES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(300);
+    let mut rng = Rng(0x0bad_5eed_1234_5678);
+    let (mut samples, mut dda_worst, mut naive_worst) = (0u64, 0i64, 0i64);
+    let mut table = String::new();
+    // Major extents of 2^bits - 1 to 2^(bits+1) - 1 steps.
+    for bits in 12..=31 {
+        let (mut dda_class, mut naive_class) = (0i64, 0i64);
+        for _ in 0..lines {
+            let dmajor = (1i64 << bits) + rng.below(1 << bits) - 1;
+            // Steep slopes in [1/2, 1] make the largest products.
+            let dminor = if rng.below(4) == 0 {
+                rng.below(dmajor as u64 + 1)
+            } else {
+                dmajor / 2 + rng.below((dmajor - dmajor / 2) as u64 + 1)
+            };
+            let x0 = MIN + rng.below((MAX - MIN - dmajor) as u64 + 1);
+            let y0 = MIN + rng.below((MAX - MIN - dminor) as u64 + 1);
+            let (mut a, mut b) = ((x0, y0), (x0 + dmajor, y0 + dminor));
+            if rng.below(2) == 0 {
+                (a.1, b.1) = (b.1, a.1);
+            }
+            if rng.below(2) == 0 {
+                (a, b) = ((a.1, a.0), (b.1, b.0));
+            }
+            let line = Line::new(p(a.0, a.1), p(b.0, b.1));
+            let (x_major, _) = ideal_minor(line.start, line.end, 0);
+            let start = if x_major { a.0.min(b.0) } else { a.1.min(b.1) };
+            let mut ks: Vec<i64> = (0..24).map(|_| rng.below(dmajor as u64 + 1)).collect();
+            ks.extend([0, 1, dmajor - 1, dmajor]);
+            ks.extend((0..24).map(|_| {
+                let k = dmajor - rng.below(dmajor as u64 / 2 + 1);
+                (k & !255 | 128).min(dmajor)
+            }));
+            for k in ks {
+                let t = start + k;
+                let exact = ideal_minor(line.start, line.end, t).1.unwrap();
+                samples += 1;
+                for (algorithm, worst) in [
+                    (LineAlgorithm::Dda, &mut dda_class),
+                    (LineAlgorithm::Naive, &mut naive_class),
+                ] {
+                    let got = variant_at(line, algorithm, t);
+                    let got = got.unwrap_or_else(|| panic!("{line:?} {algorithm:?}: none at {t}"));
+                    *worst = (*worst).max((got - exact).abs());
+                }
+            }
+        }
+        table += &format!(
+            "major extent 2^{bits}..2^{}: DDA {dda_class} px, naive {naive_class} px\n",
+            bits + 1
+        );
+        dda_worst = dda_worst.max(dda_class);
+        naive_worst = naive_worst.max(naive_class);
+        // The documented figure: below 2^n steps (n >= 23), at most
+        // 2^(n - 22) px; below 2^23 steps, at most 1 px.
+        assert!(naive_class <= ((1 << (bits + 1)) >> 22).max(1), "{table}");
+    }
+    println!("{samples} samples:\n{table}");
+    assert!(dda_worst <= 1, "{table}");
+    // The proven bound for the naive line (`LineAlgorithm`'s docs).
+    assert!(naive_worst <= 1537, "{table}");
+}

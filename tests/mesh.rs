@@ -112,3 +112,75 @@ fn projection_centres_and_depths() {
     assert_eq!(cam.project(Vec3::new(0, 0, 0)), None);
     assert_eq!(cam.project(Vec3::new(i32::MAX, 0, 1)), None);
 }
+
+/// Issue 12, item 2: the Q15 dot product overflowed `i64` on `i32::MIN`
+/// components (a panic with overflow checks) and truncated results that do
+/// not fit `i32` with `as` (`(2^25, 2^25, 0)` squared gave 0).
+#[test]
+fn issue_12_dot_overflow_and_truncation() {
+    let big = Vec3::new(1 << 25, 1 << 25, 0);
+    assert_eq!(big.dot(big), i32::MAX);
+    assert_eq!(big.checked_dot(big), None);
+    assert_eq!(big.dot(Vec3::new(-(1 << 25), 0, 0)), i32::MIN);
+    let min = Vec3::new(i32::MIN, i32::MIN, i32::MIN);
+    assert_eq!(min.dot(min), i32::MAX);
+    assert_eq!(min.dot(Vec3::new(i32::MAX, i32::MAX, i32::MAX)), i32::MIN);
+    // In range, exact: 3 * 2^44 / 2^15 = 3 * 2^29.
+    let edge = Vec3::new(1 << 22, -(1 << 22), 1 << 22);
+    assert_eq!(edge.checked_dot(edge), Some(3 << 29));
+    // Rounding to nearest, ties up, on negative results too.
+    assert_eq!(Vec3::new(1, 0, 0).dot(Vec3::new(-(1 << 14), 0, 0)), 0);
+    assert_eq!(Vec3::new(1, 0, 0).dot(Vec3::new(-(1 << 14) - 1, 0, 0)), -1);
+}
+
+/// The rotated vector computed independently, exactly in `i128`, rounded
+/// to nearest (ties up), not yet saturated.
+fn reference_apply(r: &Rotation, v: Vec3) -> [i128; 3] {
+    r.m.map(|row| {
+        let d = i128::from(row[0]) * i128::from(v.x)
+            + i128::from(row[1]) * i128::from(v.y)
+            + i128::from(row[2]) * i128::from(v.z);
+        (d + (1 << 14)).div_euclid(1 << 15)
+    })
+}
+
+/// Issue 12, item 2: `Rotation::apply` wrapped around for large inputs
+/// (`(i32::MAX, 0, i32::MAX)` turned by 45 degrees came out negative).
+/// Within `±2^30` it is exact for every rotation `new` makes; beyond, it
+/// saturates.
+#[test]
+fn issue_12_rotation_of_large_vectors() {
+    let extremes = [i32::MIN, -(1 << 30), -1, 0, 1, 1 << 30, i32::MAX];
+    let mut worst_row = 0i64;
+    for yaw in (0..=u16::MAX).step_by(97) {
+        for pitch in (0..=u16::MAX).step_by(89) {
+            let r = Rotation::new(yaw, pitch);
+            for row in r.m {
+                let sum: i64 = row.iter().map(|&e| i64::from(e).abs()).sum();
+                worst_row = worst_row.max(sum);
+            }
+            if yaw % 1067 != 0 || pitch % 979 != 0 {
+                continue;
+            }
+            for &x in &extremes {
+                for &y in &extremes {
+                    for &z in &extremes {
+                        let v = Vec3::new(x, y, z);
+                        let want = reference_apply(&r, v);
+                        let clamp = |w: i128| w.clamp(i32::MIN.into(), i32::MAX.into()) as i32;
+                        let w = r.apply(v);
+                        assert_eq!([w.x, w.y, w.z], want.map(clamp), "{yaw} {pitch} {v:?}");
+                        let fits = want.iter().all(|&c| i32::try_from(c).is_ok());
+                        assert_eq!(r.checked_apply(v).is_some(), fits, "{yaw} {pitch} {v:?}");
+                        let small = [x, y, z].iter().all(|c| c.unsigned_abs() <= 1 << 30);
+                        assert!(!small || fits, "{yaw} {pitch} {v:?} saturates");
+                    }
+                }
+            }
+        }
+    }
+    // The documented bound on a row's absolute sum: sqrt(3) ONE + 10.
+    assert!(worst_row <= 56756 + 10, "{worst_row}");
+    let r = Rotation::new(8192, 0);
+    assert_eq!(r.apply(Vec3::new(i32::MAX, 0, i32::MAX)).x, i32::MAX);
+}

@@ -132,19 +132,25 @@ impl Canonical {
         (lo <= hi).then_some((lo, hi))
     }
 
+    /// The clip's minor range as offsets from `minor0` along
+    /// `minor_step`, inclusive.
+    pub fn minor_offsets(&self, clip: &Rectangle) -> (i64, i64) {
+        let (_, (c0, c1)) = self.clip_ranges(clip);
+        if self.minor_step > 0 {
+            (c0 - self.minor0, c1 - self.minor0)
+        } else {
+            (self.minor0 - c1, self.minor0 - c0)
+        }
+    }
+
     /// The exactly clipped visible part, or `None` if no pixel of the line
     /// lies inside `clip`.
     pub fn visible(&self, clip: &Rectangle, skip_end: bool) -> Option<Visible> {
         let (lo, hi) = self.major_steps(clip, skip_end)?;
-        let (_, (c0, c1)) = self.clip_ranges(clip);
         // The clip's minor range as offsets m, limited to the line's own
         // offsets 0..=dminor (which changes no step range: m(0) = 0 and
         // m(dmajor) = dminor), so that products stay small.
-        let (m_lo, m_hi) = if self.minor_step > 0 {
-            (c0 - self.minor0, c1 - self.minor0)
-        } else {
-            (self.minor0 - c1, self.minor0 - c0)
-        };
+        let (m_lo, m_hi) = self.minor_offsets(clip);
         if m_lo > self.dminor || m_hi < 0 {
             return None;
         }

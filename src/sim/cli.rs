@@ -3,6 +3,7 @@
 //!
 //! ```text
 //! render SCENE -o OUT.png [--counts COUNTS.pgm] [--stats] [--algo NAME] [--bits N]
+//!        [--max-pixels N]
 //! ```
 //!
 //! # Examples
@@ -20,6 +21,7 @@ use std::ffi::OsString;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::prelude::rust_2021::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::{format, writeln};
 
 use super::{parse_scene, render_scene_with};
@@ -62,6 +64,7 @@ pub const EXIT_USAGE: i32 = 2;
 /// ```
 pub const USAGE: &str = "\
 usage: render SCENE -o OUT.png [--counts COUNTS.pgm] [--stats] [--algo NAME] [--bits N]
+              [--max-pixels N]
 
 Renders a scene file to an 8-bit RGB PNG.
 
@@ -79,10 +82,15 @@ options:
                                           closed triangle (overdraws shared edges)
   --bits N                 subpixel bits vertices snap to: 0, 4, 8 or 12
                            (default 12)
+  --max-pixels N           refuse a scene whose estimated work is over N
+                           pixels (the sum over its commands of the pixels
+                           each can touch, clipped; default: no limit)
   -h, --help               print this help
 
 On a bad scene, prints `SCENE:LINE: what is wrong` on stderr, writes no
-file and exits with 1; on a bad command line, exits with 2.
+file and exits with 1; likewise for a scene over `--max-pixels`, an output
+naming the scene file (or both outputs the same file) and a file that
+cannot be written. On a bad command line, exits with 2.
 ";
 
 /// What the command line asks for.
@@ -94,6 +102,7 @@ struct Options {
     stats: bool,
     algorithm: TriangleAlgorithm,
     precision: SubpixelPrecision,
+    max_pixels: Option<u64>,
 }
 
 /// Runs the `render` command line on `args` (without the program name),
@@ -101,7 +110,11 @@ struct Options {
 /// [`EXIT_OK`], [`EXIT_FAILURE`] or [`EXIT_USAGE`].
 ///
 /// The scene is read, parsed and rendered, and both images are encoded,
-/// before any file is written: a bad scene leaves no output file. Every
+/// before any file is written: a bad scene, a scene over `--max-pixels` or
+/// an output path naming the scene file leaves no output file. The files
+/// are written under temporary names beside their targets and renamed
+/// only when both are complete, so a failure to write either leaves
+/// neither (nor any temporary file). Every
 /// error is reported as one line on `stderr` (followed by [`USAGE`] for a
 /// bad command line): `SCENE:LINE: message` for a bad scene,
 /// `PATH: message` for an I/O error.
@@ -178,6 +191,7 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
     let mut stats = false;
     let mut algorithm = TriangleAlgorithm::EdgeExact;
     let mut precision = SubpixelPrecision::Bits12;
+    let mut max_pixels = None;
     while let Some(arg) = args.next() {
         match arg.to_str() {
             Some("--algo") => {
@@ -196,6 +210,15 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
                     .ok()
                     .and_then(SubpixelPrecision::from_bits)
                     .ok_or_else(|| format!("`--bits` must be 0, 4, 8 or 12, got `{text}`"))?;
+                continue;
+            }
+            Some("--max-pixels") => {
+                let v = args.next().ok_or("`--max-pixels` needs a number")?;
+                let text = v.to_string_lossy();
+                let n = text.parse::<u64>().map_err(|_| {
+                    format!("`--max-pixels` must be a non-negative integer, got `{text}`")
+                })?;
+                max_pixels = Some(n);
                 continue;
             }
             _ => {}
@@ -233,12 +256,14 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
         stats,
         algorithm,
         precision,
+        max_pixels,
     }))
 }
 
 /// Everything after the command line; the error is the one stderr line.
 fn render(options: &Options, stdout: &mut impl Write) -> Result<(), String> {
     let scene_path = options.scene.display();
+    refuse_overwriting(options)?;
     let bytes =
         std::fs::read(&options.scene).map_err(|e| format!("{scene_path}: cannot read: {e}"))?;
     let text = std::str::from_utf8(&bytes).map_err(|e| {
@@ -249,6 +274,14 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<(), String> {
         format!("{scene_path}:{line}: not valid UTF-8")
     })?;
     let scene = parse_scene(text).map_err(|e| format!("{scene_path}:{}: {e}", e.line))?;
+    if let Some(limit) = options.max_pixels {
+        let work = scene.pixel_work();
+        if work > limit {
+            return Err(format!(
+                "{scene_path}: too much work: {work} pixels, over `--max-pixels {limit}`"
+            ));
+        }
+    }
     let rendered = render_scene_with(&scene, options.algorithm, options.precision);
 
     let mut png = Vec::new();
@@ -256,22 +289,17 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<(), String> {
         .display
         .write_png(&mut png)
         .map_err(|e| format!("{}: cannot encode PNG: {e}", options.output.display()))?;
-    let counts = match &options.counts {
-        Some(path) => {
-            let mut pgm = Vec::new();
-            rendered
-                .display
-                .write_counts_pgm(&mut pgm)
-                .map_err(|e| format!("{}: cannot encode PGM: {e}", path.display()))?;
-            Some((path, pgm))
-        }
-        None => None,
-    };
-
-    write_file(&options.output, &png)?;
-    if let Some((path, pgm)) = counts {
-        write_file(path, &pgm)?;
+    let mut files = vec![(options.output.as_path(), png)];
+    if let Some(path) = &options.counts {
+        let mut pgm = Vec::new();
+        rendered
+            .display
+            .write_counts_pgm(&mut pgm)
+            .map_err(|e| format!("{}: cannot encode PGM: {e}", path.display()))?;
+        files.push((path, pgm));
     }
+
+    write_all_or_nothing(&files)?;
     if options.stats {
         writeln!(stdout, "{}", rendered.stats.to_json())
             .map_err(|e| format!("cannot write to stdout: {e}"))?;
@@ -279,6 +307,88 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<(), String> {
     Ok(())
 }
 
-fn write_file(path: &Path, bytes: &[u8]) -> Result<(), String> {
-    std::fs::write(path, bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
+/// Refuses an output that is the scene file, or two outputs that are one
+/// file, comparing canonical paths (an output that does not exist yet is
+/// its canonical directory and its name).
+fn refuse_overwriting(options: &Options) -> Result<(), String> {
+    let scene = std::fs::canonicalize(&options.scene).ok();
+    let output = resolve(&options.output);
+    let counts = options.counts.as_deref().map(|p| (p, resolve(p)));
+    for (path, name, resolved) in [(options.output.as_path(), "-o", &output)]
+        .into_iter()
+        .chain(counts.as_ref().map(|(p, r)| (*p, "--counts", r)))
+    {
+        if resolved.is_some() && *resolved == scene {
+            return Err(format!(
+                "{}: `{name}` names the scene file; refusing to overwrite it",
+                path.display()
+            ));
+        }
+    }
+    match counts {
+        Some((path, resolved)) if resolved.is_some() && resolved == output => Err(format!(
+            "{}: `-o` and `--counts` name the same file",
+            path.display()
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// The canonical form of `path`, or of its parent joined with its name if
+/// it does not exist; `None` if neither resolves.
+fn resolve(path: &Path) -> Option<PathBuf> {
+    if let Ok(p) = std::fs::canonicalize(path) {
+        return Some(p);
+    }
+    let name = path.file_name()?;
+    let parent = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    Some(std::fs::canonicalize(parent).ok()?.join(name))
+}
+
+/// Writes every file under a temporary name beside it, then renames them
+/// all into place; on any failure removes what it wrote.
+fn write_all_or_nothing(files: &[(&Path, Vec<u8>)]) -> Result<(), String> {
+    let mut temps: Vec<(PathBuf, &Path)> = Vec::new();
+    let cleanup = |temps: &[(PathBuf, &Path)]| {
+        for (temp, _) in temps {
+            let _ = std::fs::remove_file(temp);
+        }
+    };
+    for (path, bytes) in files {
+        let err = |e: std::io::Error| format!("{}: cannot write: {e}", path.display());
+        let temp = temp_name(path).ok_or_else(|| err(std::io::ErrorKind::InvalidInput.into()));
+        let written = temp.and_then(|t| {
+            let r = std::fs::write(&t, bytes).map_err(err);
+            temps.push((t, path));
+            r
+        });
+        if let Err(e) = written {
+            cleanup(&temps);
+            return Err(e);
+        }
+    }
+    for (i, (temp, path)) in temps.iter().enumerate() {
+        if let Err(e) = std::fs::rename(temp, path) {
+            // The files already renamed hold this run's output: remove them
+            // too, so that nothing of a failed run is left.
+            for (_, done) in &temps[..i] {
+                let _ = std::fs::remove_file(done);
+            }
+            cleanup(&temps[i..]);
+            return Err(format!("{}: cannot write: {e}", path.display()));
+        }
+    }
+    Ok(())
+}
+
+/// `DIR/.NAME.render-PID-N.tmp` for `DIR/NAME`, `N` counting the calls in
+/// this process (so that runs in threads of one process never share one).
+fn temp_name(path: &Path) -> Option<PathBuf> {
+    static NEXT: AtomicUsize = AtomicUsize::new(0);
+    let name = path.file_name()?.to_string_lossy();
+    let n = NEXT.fetch_add(1, Ordering::Relaxed);
+    Some(path.with_file_name(format!(".{name}.render-{}-{n}.tmp", std::process::id())))
 }

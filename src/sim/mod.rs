@@ -35,6 +35,7 @@
 //! [`DrawTarget`]: embedded_graphics_core::draw_target::DrawTarget
 
 pub mod cli;
+mod cost;
 pub mod delaunay_cli;
 mod display;
 mod render;

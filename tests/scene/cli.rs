@@ -243,3 +243,176 @@ fn cli_usage() {
         assert!(!png_file.0.exists(), "{args:?}");
     }
 }
+
+/// The entries of `dir` whose names contain `part` (temporary files
+/// included).
+fn entries_with(dir: &std::path::Path, part: &str) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter(|n| n.contains(part))
+        .collect()
+}
+
+/// Issue 12, item 3: `--counts` into a directory that does not exist
+/// failed but left `OUT.png` written. Now neither file nor any temporary
+/// file is left, whichever output fails.
+#[test]
+fn issue_12_failing_counts_writes_no_file() {
+    let scene = Temp::with("counts.scene", SCENE);
+    let png_file = Temp::new("counts.png");
+    let missing = Temp::new("no-such-dir");
+    let bad = missing.0.join("counts.pgm");
+    for args in [
+        [&png_file.arg(), bad.to_str().unwrap()],
+        [bad.to_str().unwrap(), &Temp::new("counts.pgm").arg()],
+    ] {
+        let (code, out, err) = run(&[&scene.arg(), "-o", args[0], "--counts", args[1]]);
+        assert_eq!((code, out.as_str()), (1, ""), "{args:?}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(
+            err.starts_with(&format!("{}: cannot write: ", bad.display())),
+            "{err}"
+        );
+        for path in args {
+            assert!(!std::path::Path::new(path).exists(), "{path} left behind");
+        }
+        let name = std::format!("embedded-raster-scene-test-{}-", std::process::id());
+        let left: Vec<_> = entries_with(&std::env::temp_dir(), &name)
+            .into_iter()
+            .filter(|n| n.ends_with(".tmp"))
+            .collect();
+        assert!(left.is_empty(), "temporary files left: {left:?}");
+    }
+    // A good run leaves no temporary file either.
+    let pgm_file = Temp::new("counts-ok.pgm");
+    let (code, _, err) = run(&[
+        &scene.arg(),
+        "-o",
+        &png_file.arg(),
+        "--counts",
+        &pgm_file.arg(),
+    ]);
+    assert_eq!((code, err.as_str()), (0, ""));
+    assert!(png_file.0.exists() && pgm_file.0.exists());
+    let tmp = entries_with(&std::env::temp_dir(), ".render-");
+    let ours = std::format!(".render-{}-", std::process::id());
+    assert!(!tmp.iter().any(|n| n.contains(&ours)), "{tmp:?}");
+}
+
+/// Issue 12, item 3: `-o` naming the scene file overwrote the scene. Now it
+/// is refused, however the path is spelled, as is `--counts` naming the
+/// scene or the PNG.
+#[test]
+fn issue_12_output_naming_the_scene_is_refused() {
+    let scene = Temp::with("self.scene", SCENE);
+    let dir = scene.0.parent().unwrap();
+    let name = scene.0.file_name().unwrap().to_str().unwrap();
+    let respelled = dir.join(".").join(name);
+    let respelled = respelled.to_str().unwrap();
+    let png_file = Temp::new("self.png");
+    let (s, p) = (scene.arg(), png_file.arg());
+    let cases = [
+        (vec!["-o", s.as_str()], scene.arg(), "-o"),
+        (vec!["-o", respelled], respelled.to_string(), "-o"),
+        (
+            vec!["-o", p.as_str(), "--counts", respelled],
+            respelled.to_string(),
+            "--counts",
+        ),
+    ];
+    for (options, path, option) in cases {
+        let mut args = vec![scene.arg()];
+        args.extend(options.iter().map(|s| s.to_string()));
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let (code, out, err) = run(&args);
+        assert_eq!((code, out.as_str()), (1, ""), "{args:?}");
+        assert_eq!(
+            err,
+            format!("{path}: `{option}` names the scene file; refusing to overwrite it\n"),
+            "{args:?}"
+        );
+        assert_eq!(std::fs::read_to_string(&scene.0).unwrap(), SCENE);
+        assert!(!png_file.0.exists(), "{args:?}");
+    }
+
+    let (code, _, err) = run(&[
+        &scene.arg(),
+        "-o",
+        &png_file.arg(),
+        "--counts",
+        &png_file.arg(),
+    ]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        err,
+        format!(
+            "{}: `-o` and `--counts` name the same file\n",
+            png_file.arg()
+        )
+    );
+    assert!(!png_file.0.exists());
+}
+
+/// Issue 12, item 5: `--max-pixels` refuses a scene whose estimated work is
+/// over the limit, writing nothing; at the limit it renders.
+#[test]
+fn issue_12_max_pixels() {
+    // 4096 x 4096 and many clears: 2^24 pixels per clear.
+    let mut text = String::from("size 4096 4096\n");
+    for _ in 0..1000 {
+        text.push_str("clear #ffffff\n");
+    }
+    let heavy = Temp::with("heavy.scene", &text);
+    let png_file = Temp::new("heavy.png");
+    let pgm_file = Temp::new("heavy.pgm");
+    let (code, out, err) = run(&[
+        &heavy.arg(),
+        "-o",
+        &png_file.arg(),
+        "--counts",
+        &pgm_file.arg(),
+        "--max-pixels",
+        "100000000",
+    ]);
+    assert_eq!((code, out.as_str()), (1, ""));
+    assert_eq!(
+        err,
+        format!(
+            "{}: too much work: {} pixels, over `--max-pixels 100000000`\n",
+            heavy.arg(),
+            1000u64 << 24
+        )
+    );
+    assert!(!png_file.0.exists() && !pgm_file.0.exists());
+
+    // SCENE costs 24 (clear) + 4 (rect) + 9 (tri's box 3..6 x 0..3).
+    let scene = Temp::with("light.scene", SCENE);
+    for (limit, code) in [("37", 0), ("36", 1), ("0", 1)] {
+        let (got, _, err) = run(&[&scene.arg(), "-o", &png_file.arg(), "--max-pixels", limit]);
+        assert_eq!(got, code, "{limit}: {err}");
+        assert_eq!(png_file.0.exists(), code == 0, "{limit}");
+        let _ = std::fs::remove_file(&png_file.0);
+    }
+    for bad in ["-1", "x", "1e9"] {
+        let (code, _, err) = run(&[&scene.arg(), "-o", &png_file.arg(), "--max-pixels", bad]);
+        assert_eq!(code, 2, "{bad}");
+        assert!(
+            err.starts_with(&format!(
+                "render: `--max-pixels` must be a non-negative integer, got `{bad}`"
+            )),
+            "{err}"
+        );
+    }
+}
+
+/// Found by `tests/fuzz.rs`: the cost estimate of a rectangle reaching past
+/// `i32::MAX` overflowed (`Rectangle::intersection`).
+#[test]
+fn issue_12_cost_of_a_rectangle_past_i32_max() {
+    let scene = embedded_raster::sim::parse_scene(
+        "size 8 8\nrect 2147483647 0 2147483647 8 #ffffff\nrect -4 -4 2147483647 6 #ffffff\n",
+    )
+    .unwrap();
+    assert_eq!(scene.pixel_work(), 16);
+}

@@ -1,0 +1,463 @@
+//! A deterministic, structure-aware random driver (issue 12): every
+//! drawable at `i32` and 20.12 extremes, the framebuffer formats, the
+//! scene parser and renderer, and the `mesh` arithmetic, under the test
+//! profile's overflow checks.
+//!
+//! Each target checks that nothing panics, that a [`SimDisplay`] sees no
+//! write outside its area, that triangles and polygons light exactly the
+//! pixels of the independent reference in `tests/common` (windows placed
+//! anywhere, including the edges of the 20.12 range), that every
+//! `Framebuffer` format holds exactly what a `SimDisplay` receives for the
+//! same drawing, and that a scene never writes more pixels than its cost
+//! estimate (`Scene::pixel_work`).
+//!
+//! `FUZZ_CASES` sets the number of inputs per target (default 300, what CI
+//! runs) and `FUZZ_SEED` the generator's seed. The deep campaign, in the
+//! test profile (optimised, overflow checks on; `--release` would turn
+//! them off), 10^7 inputs over the five targets:
+//!
+//! ```text
+//! FUZZ_CASES=2000000 cargo test --all-features --test fuzz -- --nocapture --test-threads=1
+//! ```
+//!
+//! Each target prints its input count.
+#![cfg(feature = "sim")]
+
+mod common;
+#[path = "common/rng.rs"]
+mod rng;
+
+use embedded_graphics_core::{
+    pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888, RgbColor},
+    prelude::*,
+};
+use embedded_raster::{
+    framebuffer::{buffer_size, BinaryMsb, Gray8Bytes, Rgb565Be, Rgb565Le, Rgb888Bytes},
+    mesh::{Camera, Rotation, Vec3},
+    sim::{parse_scene, render_scene, SimDisplay},
+    FillRule, Framebuffer, Line, LineAlgorithm, Polygon, Polyline, Triangle, Vertex,
+};
+
+use common::{add_spans_from, rasterized, reference_fill, reference_triangle, Grid};
+use rng::Rng;
+
+/// Inputs per target: `FUZZ_CASES`, default 300.
+fn cases() -> u64 {
+    std::env::var("FUZZ_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(300)
+}
+
+/// A generator for one target: `FUZZ_SEED` mixed with the target's salt.
+fn rng(salt: u64) -> Rng {
+    let seed: u64 = std::env::var("FUZZ_SEED")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0x5eed_f00d_1234_5678);
+    Rng(seed ^ salt.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1)
+}
+
+/// One of `choices`, or `other` one time in `choices.len() + 1`.
+fn pick<T: Copy>(r: &mut Rng, choices: &[T], other: impl FnOnce(&mut Rng) -> T) -> T {
+    match usize::try_from(r.below(choices.len() as u64 + 1)).unwrap() {
+        i if i < choices.len() => choices[i],
+        _ => other(r),
+    }
+}
+
+/// A raw 20.12 coordinate: the range's ends, zero, tiny values, values
+/// near `near` (pixels), or anything.
+fn raw(r: &mut Rng, near: i64) -> i32 {
+    let c = [
+        i32::MIN,
+        i32::MIN + 1,
+        i32::MAX,
+        i32::MAX - 1,
+        0,
+        1,
+        -1,
+        2048,
+        4095,
+    ];
+    match r.below(3) {
+        0 => pick(r, &c, |r| r.next() as i32),
+        _ => (near * 4096 + r.below(40 * 4096) - 20 * 4096).clamp(i32::MIN.into(), i32::MAX.into())
+            as i32,
+    }
+}
+
+/// A pixel coordinate: `i32` ends, zero, or near `near`.
+fn pixel(r: &mut Rng, near: i64) -> i32 {
+    let c = [i32::MIN, i32::MIN + 1, i32::MAX, i32::MAX - 1, 0, -1];
+    match r.below(3) {
+        0 => pick(r, &c, |r| r.next() as i32),
+        _ => (near + r.below(40) - 20).clamp(i32::MIN.into(), i32::MAX.into()) as i32,
+    }
+}
+
+/// Where to look: near the origin, at the edges of the 20.12 range, or at
+/// the `i32` ends (pixels).
+fn focus(r: &mut Rng) -> i64 {
+    pick(r, &[0, 4, -524288, 524280, -524292], |r| {
+        r.below(1 << 20) - (1 << 19)
+    })
+}
+
+fn vertex(r: &mut Rng, fx: i64, fy: i64) -> Vertex {
+    Vertex::from_raw(raw(r, fx), raw(r, fy))
+}
+
+/// Draws `target` on a `SimDisplay` and on a `Framebuffer` of every
+/// format, 16 x 16, and checks that they agree and nothing lands outside.
+/// Returns the display's lit grid (write count > 0).
+fn on_every_target(target: &Target) -> Grid {
+    let mut display = SimDisplay::new(16, 16, Rgb888::BLACK);
+    target.sim(&mut display);
+    assert_eq!(display.out_of_bounds_writes(), 0);
+    let mut lit = Grid::new(0, 0, 16, 16);
+    for j in 0..16 {
+        for i in 0..16 {
+            if display.write_count(Point::new(i, j)) != Some(0) {
+                lit.bump(i64::from(i), i64::from(j));
+            }
+        }
+    }
+    macro_rules! check {
+        ($f:ty, $c:ty, $on:expr) => {{
+            let mut fb = Framebuffer::<$f, 16, 16, { buffer_size::<$f>(16, 16) }>::new();
+            let background: $c = fb.pixel(Point::zero()).unwrap();
+            let mut sim = SimDisplay::new(16, 16, background);
+            target.framebuffer(&mut fb, &mut sim, $on);
+            assert_eq!(sim.out_of_bounds_writes(), 0);
+            for j in 0..16 {
+                for i in 0..16 {
+                    let p = Point::new(i, j);
+                    assert_eq!(fb.pixel(p), sim.pixel(p), "{} at {p:?}", stringify!($f));
+                }
+            }
+        }};
+    }
+    check!(Rgb565Le, Rgb565, Rgb565::new(31, 7, 3));
+    check!(Rgb565Be, Rgb565, Rgb565::new(1, 60, 30));
+    check!(Rgb888Bytes, Rgb888, Rgb888::new(1, 2, 3));
+    check!(Gray8Bytes, Gray8, Gray8::new(0x81));
+    check!(BinaryMsb, BinaryColor, BinaryColor::On);
+    lit
+}
+
+/// One drawable, drawable on any of the targets in one colour.
+#[derive(Clone)]
+enum Target {
+    Tri(Triangle),
+    Poly(Vec<Vertex>, FillRule),
+    Line(Line, LineAlgorithm, u32),
+    Polyline(Vec<Point>, LineAlgorithm, u32),
+}
+
+impl Target {
+    fn sim(&self, d: &mut SimDisplay<Rgb888>) {
+        self.draw(d, Rgb888::WHITE);
+    }
+
+    fn framebuffer<D, C>(&self, fb: &mut D, sim: &mut SimDisplay<C>, on: C)
+    where
+        D: DrawTarget<Color = C, Error = core::convert::Infallible>,
+        C: PixelColor,
+    {
+        self.draw(fb, on);
+        self.draw(sim, on);
+    }
+
+    fn draw<D: DrawTarget<Color = C, Error = core::convert::Infallible>, C: PixelColor>(
+        &self,
+        d: &mut D,
+        c: C,
+    ) {
+        let Ok(()) = match self {
+            Target::Tri(t) => t.fill(c).draw(d),
+            Target::Poly(v, rule) => Polygon::<8>::new(v)
+                .unwrap()
+                .fill(c)
+                .with_rule(*rule)
+                .draw(d),
+            Target::Line(l, a, w) => l.stroke(c).stroke_width(*w).algorithm(*a).draw(d),
+            Target::Polyline(p, a, w) => Polyline::new(p)
+                .stroke(c)
+                .stroke_width(*w)
+                .algorithm(*a)
+                .draw(d),
+        };
+    }
+}
+
+fn assert_same(got: &Grid, want: &Grid, what: &dyn std::fmt::Debug) {
+    let d = got.diff(want);
+    assert!(
+        d.is_empty(),
+        "{what:?}: {} pixels differ: {:?}",
+        d.len(),
+        &d[..d.len().min(8)]
+    );
+}
+
+#[test]
+fn fuzz_triangles() {
+    let mut r = rng(1);
+    let n = cases();
+    for _ in 0..n {
+        let (fx, fy) = (focus(&mut r), focus(&mut r));
+        let t = Triangle::new(
+            vertex(&mut r, fx, fy),
+            vertex(&mut r, fx, fy),
+            vertex(&mut r, fx, fy),
+        );
+        // A window wherever the triangle is, against the reference.
+        let (x0, y0) = (fx + r.below(16) - 8, fy + r.below(16) - 8);
+        assert_same(
+            &rasterized(&t, x0, y0, 8, 8),
+            &reference_triangle(&t, x0, y0, 8, 8),
+            &t,
+        );
+        // Every target at the origin.
+        let lit = on_every_target(&Target::Tri(t));
+        assert_same(&lit, &reference_triangle(&t, 0, 0, 16, 16), &t);
+        // Gouraud: the same pixels.
+        let mut d = SimDisplay::new(16, 16, Rgb888::BLACK);
+        let Ok(()) = t
+            .gouraud([Rgb888::RED, Rgb888::GREEN, Rgb888::BLUE])
+            .draw(&mut d);
+        assert_eq!(d.out_of_bounds_writes(), 0);
+        for j in 0..16 {
+            for i in 0..16 {
+                let written = d.write_count(Point::new(i, j)) != Some(0);
+                assert_eq!(written, lit.get(i64::from(i), i64::from(j)) != 0, "{t:?}");
+            }
+        }
+    }
+    println!("fuzz_triangles: {n} inputs");
+}
+
+#[test]
+fn fuzz_polygons() {
+    let mut r = rng(2);
+    let n = cases();
+    for _ in 0..n {
+        let (fx, fy) = (focus(&mut r), focus(&mut r));
+        let len = 3 + r.below(6) as usize;
+        let v: Vec<Vertex> = (0..len).map(|_| vertex(&mut r, fx, fy)).collect();
+        let rule = if r.below(2) == 0 {
+            FillRule::EvenOdd
+        } else {
+            FillRule::NonZero
+        };
+        let even_odd = rule == FillRule::EvenOdd;
+        let poly = Polygon::<8>::new(&v).unwrap();
+        let (x0, y0) = (fx + r.below(16) - 8, fy + r.below(16) - 8);
+        let mut got = Grid::new(x0, y0, 8, 8);
+        add_spans_from::<core::convert::Infallible>(&mut got, |clip, f| {
+            poly.for_each_span(rule, clip, f)
+        });
+        assert_same(&got, &reference_fill(&v, even_odd, x0, y0, 8, 8), &v);
+        let lit = on_every_target(&Target::Poly(v.clone(), rule));
+        assert_same(&lit, &reference_fill(&v, even_odd, 0, 0, 16, 16), &v);
+    }
+    println!("fuzz_polygons: {n} inputs");
+}
+
+#[test]
+fn fuzz_lines_and_polylines() {
+    let mut r = rng(3);
+    let n = cases();
+    let algorithms = [
+        LineAlgorithm::Bresenham,
+        LineAlgorithm::Dda,
+        LineAlgorithm::Naive,
+    ];
+    for _ in 0..n {
+        let f = pick(&mut r, &[0, 8], |r| r.next() as i32 as i64);
+        let point = |r: &mut Rng| Point::new(pixel(r, f), pixel(r, f));
+        let a = algorithms[r.below(3) as usize];
+        let width = pick(&mut r, &[1, 1, 1, 2, 3, 7, 1000, u32::MAX], |r| {
+            r.below(64) as u32
+        });
+        let line = Line::new(point(&mut r), point(&mut r));
+        on_every_target(&Target::Line(line, a, width));
+        let len = 2 + r.below(5) as usize;
+        let points: Vec<Point> = (0..len).map(|_| point(&mut r)).collect();
+        on_every_target(&Target::Polyline(points, a, width));
+    }
+    println!("fuzz_lines_and_polylines: {n} inputs (a line and a polyline each)");
+}
+
+/// A random scene: mostly well-formed commands at extreme values, now and
+/// then a bad token.
+fn scene_text(r: &mut Rng) -> String {
+    // About one token in 100 is bad (out of range or malformed), so that
+    // most scenes parse and a fair share fail somewhere.
+    let bad = |r: &mut Rng| r.below(100) == 0;
+    let num = |r: &mut Rng| -> String {
+        if bad(r) {
+            return pick(r, &["524288", "1e3", "nan", "-524288.0001", "0x10"], |_| {
+                "inf"
+            })
+            .to_string();
+        }
+        match r.below(8) {
+            0 => {
+                let extreme = [
+                    "-524288",
+                    "524287.999755859375",
+                    "-0.5",
+                    "0.000244140625",
+                    "-0",
+                ];
+                match r.below(extreme.len() as u64 + 1) as usize {
+                    i if i < extreme.len() => extreme[i].to_string(),
+                    _ => format!("{}", r.below(1 << 21) - (1 << 20)),
+                }
+            }
+            1 => format!("{}.{}", r.below(80) - 20, r.below(10000)),
+            _ => format!("{}", r.below(80) - 20),
+        }
+    };
+    let int = |r: &mut Rng| -> String {
+        if bad(r) {
+            return pick(r, &["2147483648", "1.5", "-2147483649"], |_| "x").to_string();
+        }
+        pick(r, &[i32::MIN as i64, i32::MAX as i64, 0, -1], |r| {
+            r.below(80) - 20
+        })
+        .to_string()
+    };
+    let colour = |r: &mut Rng| -> String {
+        if bad(r) {
+            return pick(r, &["#0", "#GGGGGG", "ffffff"], |_| "#1234567").to_string();
+        }
+        pick(r, &["#ffffff", "#000000", "#FF8000"], |_| "#123abc").to_string()
+    };
+    let (w, h) = (1 + r.below(40), 1 + r.below(40));
+    let mut s = format!("size {w} {h}\n");
+    for _ in 0..r.below(12) {
+        let line = match r.below(8) {
+            0 => format!("clear {}", colour(r)),
+            1 => format!(
+                "rect {} {} {} {} {}",
+                int(r),
+                int(r),
+                int(r).trim_start_matches('-'),
+                int(r).trim_start_matches('-'),
+                colour(r)
+            ),
+            2 => format!(
+                "tri {} {} {} {} {} {} {}",
+                num(r),
+                num(r),
+                num(r),
+                num(r),
+                num(r),
+                num(r),
+                colour(r)
+            ),
+            3 => format!(
+                "gtri {} {} {} {} {} {} {} {} {}",
+                num(r),
+                num(r),
+                colour(r),
+                num(r),
+                num(r),
+                colour(r),
+                num(r),
+                num(r),
+                colour(r)
+            ),
+            4 => format!(
+                "line {} {} {} {} {}",
+                int(r),
+                int(r),
+                int(r),
+                int(r),
+                colour(r)
+            ),
+            5 => {
+                let pts: Vec<String> = (0..2 * (2 + r.below(4))).map(|_| int(r)).collect();
+                format!("polyline {} {}", colour(r), pts.join(" "))
+            }
+            6 => {
+                let pts: Vec<String> = (0..2 * (3 + r.below(5))).map(|_| num(r)).collect();
+                let rule = pick(r, &["evenodd", "nonzero", "winding"], |_| "nonzero");
+                format!("poly {rule} {} {}", colour(r), pts.join(" "))
+            }
+            _ if bad(r) => pick(r, &["circle 1 2 3", "size 4 4", "tri 1 2"], |_| {
+                "poly nonzero #ffffff 0 0 1 1"
+            })
+            .to_string(),
+            _ => pick(r, &["# comment", ""], |_| "\t").to_string(),
+        };
+        s.push_str(&line);
+        s.push('\n');
+    }
+    s
+}
+
+#[test]
+fn fuzz_scenes() {
+    let mut r = rng(4);
+    let n = cases();
+    let mut parsed = 0;
+    for _ in 0..n {
+        let text = scene_text(&mut r);
+        let Ok(scene) = parse_scene(&text) else {
+            continue;
+        };
+        parsed += 1;
+        let rendered = render_scene(&scene);
+        assert_eq!(rendered.display.out_of_bounds_writes(), 0, "{text}");
+        let work = scene.pixel_work();
+        assert!(
+            rendered.stats.pixels_written <= work,
+            "{text}: {} > {work}",
+            rendered.stats.pixels_written
+        );
+    }
+    println!("fuzz_scenes: {n} inputs, {parsed} parsed and rendered");
+}
+
+#[test]
+fn fuzz_mesh() {
+    let mut r = rng(5);
+    let n = cases();
+    let any = |r: &mut Rng| {
+        pick(
+            r,
+            &[i32::MIN, i32::MAX, 0, 1, -1, 1 << 15, 1 << 30, -(1 << 30)],
+            |r| r.next() as i32,
+        )
+    };
+    for _ in 0..n {
+        let v = Vec3::new(any(&mut r), any(&mut r), any(&mut r));
+        let o = Vec3::new(any(&mut r), any(&mut r), any(&mut r));
+        let exact = {
+            let p = |a: i32, b: i32| i128::from(a) * i128::from(b);
+            (p(v.x, o.x) + p(v.y, o.y) + p(v.z, o.z) + (1 << 14)) >> 15
+        };
+        assert_eq!(
+            i128::from(v.dot(o)),
+            exact.clamp(i32::MIN.into(), i32::MAX.into())
+        );
+        assert_eq!(
+            v.checked_dot(o).map(i128::from),
+            i32::try_from(exact).ok().map(i128::from)
+        );
+        let rot = Rotation::new(r.next() as u16, r.next() as u16);
+        let _ = (rot.apply(v), rot.checked_apply(v));
+        let cam = Camera {
+            focal: any(&mut r),
+            centre: (any(&mut r), any(&mut r)),
+            near: any(&mut r),
+            far: any(&mut r),
+        };
+        let _ = cam.project(v);
+    }
+    println!("fuzz_mesh: {n} inputs");
+}
