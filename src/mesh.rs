@@ -16,7 +16,7 @@
 //! [`Camera::project`]). Each function's docs give the range in which its
 //! result is exact.
 
-use crate::Vertex;
+use crate::vertex::Vertex;
 
 /// 1.0 in Q15, the fixed-point format of [`Vec3`] and of [`sin_cos`].
 pub const ONE: i32 = 1 << 15;

@@ -25,7 +25,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::{format, writeln};
 
 use super::{parse_scene, render_scene_with};
-use crate::{SubpixelPrecision, TriangleAlgorithm};
+use crate::{triangle::SubpixelPrecision, triangle::TriangleAlgorithm};
 
 /// Exit code of a successful run (and of `--help`).
 ///

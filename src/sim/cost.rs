@@ -6,7 +6,7 @@
 use embedded_graphics_core::{geometry::Point, prelude::*, primitives::Rectangle};
 
 use super::{Command, Scene};
-use crate::Vertex;
+use crate::vertex::Vertex;
 
 impl Scene {
     /// The scene's estimated work: the sum of [`Command::pixel_work`] over

@@ -34,7 +34,7 @@ use super::cli::{EXIT_FAILURE, EXIT_OK, EXIT_USAGE};
 use super::scene::vertex;
 use super::SceneError;
 use crate::delaunay::{Delaunay, MAX_POINTS};
-use crate::Vertex;
+use crate::vertex::Vertex;
 
 /// The help text, printed by `--help` (on stdout) and after a usage error
 /// (on stderr).

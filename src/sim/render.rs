@@ -14,7 +14,9 @@ use embedded_graphics_core::{
 
 use super::{scene::SCENE_POLYGON_CAPACITY, Command, Scene, SimDisplay};
 use crate::clip::Bounds;
-use crate::{Polygon, Polyline, SubpixelPrecision, TriangleAlgorithm};
+use crate::{
+    line::Polyline, polygon::Polygon, triangle::SubpixelPrecision, triangle::TriangleAlgorithm,
+};
 
 /// The part of `rect` inside `clip`, or `None` if there is none.
 fn clip(rect: &Rectangle, clip: &Rectangle) -> Option<Rectangle> {

@@ -23,7 +23,10 @@ use embedded_graphics_core::{
     primitives::Rectangle,
 };
 
-use crate::{FillRule, Line, ParseCoordinateError, Polygon, Triangle, Vertex};
+use crate::{
+    line::Line, polygon::FillRule, polygon::Polygon, triangle::Triangle,
+    vertex::ParseCoordinateError, vertex::Vertex,
+};
 
 /// Largest width and height a scene may have.
 pub const MAX_SCENE_SIDE: u32 = 4096;
