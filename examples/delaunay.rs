@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! cargo run --release --features sim --example delaunay -- POINTS -o OUT.scene [--size WxH] [--gouraud]
-//! cargo run --release --features sim --example render -- OUT.scene -o OUT.png
+//! cargo run --release --features sim --bin render -- OUT.scene -o OUT.png
 //! ```
 //!
 //! `POINTS` holds one `x y` pair per line; run with `--help` for details.

@@ -1,7 +1,8 @@
-//! Renders a scene file to a PNG image.
+//! Renders a scene file to a PNG image: the `render` tool of the scene
+//! contract, a binary target so that it builds without the dev-dependencies.
 //!
 //! ```text
-//! cargo run --release --features sim --example render -- SCENE -o OUT.png [--counts COUNTS.pgm] [--stats]
+//! cargo run --release --features sim --bin render -- SCENE -o OUT.png [--counts COUNTS.pgm] [--stats]
 //! ```
 //!
 //! The scene format is described in `embedded_raster::sim`; run with
