@@ -568,3 +568,42 @@ fn variant_error_on_long_lines() {
     // The proven bound for the naive line (`LineAlgorithm`'s docs).
     assert!(naive_worst <= 1537, "{table}");
 }
+
+/// `LinePixels` whose last pixel has major coordinate `i32::MIN` stepped
+/// its end past the range: "attempt to subtract with overflow" with
+/// overflow checks, and without them an end of `i32::MAX`, so the iterator
+/// went on for 2^32 pixels outside the clip rectangle. Found by the fuzz
+/// driver (`tests/fuzz.rs`).
+#[test]
+fn issue_12_line_pixels_ending_at_i32_min() {
+    let (min, max) = (i32::MIN, i32::MAX);
+    let pt = Point::new;
+    for (line, clip, want) in [
+        // x-major, seen in column i32::MIN only.
+        (
+            Line::new(pt(min, 0), pt(min + 10, 0)),
+            Rectangle::new(pt(min, -5), Size::new(1, 10)),
+            pt(min, 0),
+        ),
+        // y-major, seen in row i32::MIN only.
+        (
+            Line::new(pt(3, min + 10), pt(3, min)),
+            Rectangle::new(pt(0, min), Size::new(10, 1)),
+            pt(3, min),
+        ),
+        // The other end of the range.
+        (
+            Line::new(pt(max - 10, 7), pt(max, 7)),
+            Rectangle::new(pt(max, 0), Size::new(1, 10)),
+            pt(max, 7),
+        ),
+    ] {
+        let mut pixels = line.pixels(&clip).unwrap();
+        assert_eq!(pixels.len(), 1);
+        assert_eq!(pixels.next(), Some(want), "{line:?}");
+        assert!(pixels.is_empty(), "{line:?}");
+        assert_eq!(pixels.len(), 0);
+        assert_eq!(pixels.next(), None, "{line:?}");
+        assert_eq!(line.pixels(&clip).unwrap().take(3).count(), 1);
+    }
+}

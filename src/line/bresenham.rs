@@ -284,8 +284,9 @@ impl Iterator for LinePixels {
             }
             self.first_major += 1;
         } else {
-            // Past the end, without stepping beyond i32.
-            self.last_major -= 1;
+            // Past the end: an empty range, without stepping beyond `i32`
+            // (the last pixel may sit at `i32::MIN` or `i32::MAX`).
+            (self.first_major, self.last_major) = (i32::MAX, i32::MIN);
         }
         Some(p)
     }

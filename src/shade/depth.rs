@@ -102,7 +102,9 @@ impl<'a> DepthBuffer<'a> {
 
     /// Depth-tests the pixels of `span` (inside the buffer) whose 32.32
     /// depth starts at `z` and steps by `dz`, storing the passing ones, and
-    /// calls `run(offset, len)` for each run of passing pixels.
+    /// calls `run(offset, len)` for each run of passing pixels. `|z| < 2^49`
+    /// and `|dz| <= 2^48` (module `shade`: `Linear::new` stores larger steps
+    /// as 0), so `z += dz` cannot overflow.
     fn test_span<E>(
         &self,
         span: Span,
@@ -118,7 +120,7 @@ impl<'a> DepthBuffer<'a> {
             // rounded depth is in 0..=65535 by the interpolation bound
             // (module `shade`), so the cast is exact.
             while i < row.len() && round_fixed(z) as u16 >= row[i].get() {
-                z = z.wrapping_add(dz);
+                z += dz;
                 i += 1;
             }
             let first = i;
@@ -128,7 +130,7 @@ impl<'a> DepthBuffer<'a> {
                     break;
                 }
                 row[i].set(here);
-                z = z.wrapping_add(dz);
+                z += dz;
                 i += 1;
             }
             if first < i {
