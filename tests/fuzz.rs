@@ -404,7 +404,7 @@ fn window_on(r: &mut Rng, a: Point, b: Point) -> Point {
         (i64::from(a.y), i64::from(b.y))
     };
     let t = pick(r, &[m0, m1, m0 + (m1 - m0) / 2], |r| {
-        m0 + ((m1 - m0) as i128 * i128::from(r.below(1 << 16)) >> 16) as i64
+        m0 + (((m1 - m0) as i128 * i128::from(r.below(1 << 16))) >> 16) as i64
     });
     let m = ideal_minor(a, b, t).1.unwrap();
     let (x, y) = if x_major { (t, m) } else { (m, t) };

@@ -250,6 +250,11 @@ impl Triangle {
     /// Styles the triangle with one colour per vertex, blended across it
     /// (Gouraud shading), ready to draw.
     ///
+    /// Any colours and any triangle in the 20.12 range: each channel is
+    /// interpolated in its own range ([`ShadeColor`]) to within 1 unit of
+    /// the exact value and never outside the vertices' values (module
+    /// docs: the error bound and the sizes of the intermediates).
+    ///
     /// # Examples
     ///
     /// ```
