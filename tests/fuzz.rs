@@ -247,47 +247,44 @@ enum Target {
     Polyline(Vec<Point>, LineAlgorithm, u32),
 }
 
+/// `$target` styled in `$c`, written by `$method` (`draw` or `draw_spans`)
+/// into `$d`.
+macro_rules! draw_with {
+    ($target:expr, $c:expr, $method:ident, $d:expr) => {{
+        let Ok(()) = match $target {
+            Target::Tri(t) => t.fill($c).$method($d),
+            Target::Poly(v, rule) => Polygon::<8>::new(v)
+                .unwrap()
+                .fill($c)
+                .with_rule(*rule)
+                .$method($d),
+            Target::Line(l, a, w) => l.stroke($c).stroke_width(*w).algorithm(*a).$method($d),
+            Target::Polyline(p, a, w) => Polyline::new(p)
+                .stroke($c)
+                .stroke_width(*w)
+                .algorithm(*a)
+                .$method($d),
+        };
+    }};
+}
+
 impl Target {
+    /// Through `Drawable::draw`.
     fn draw<D: DrawTarget<Color = C, Error = core::convert::Infallible>, C: PixelColor>(
         &self,
         d: &mut D,
         c: C,
     ) {
-        let Ok(()) = match self {
-            Target::Tri(t) => t.fill(c).draw(d),
-            Target::Poly(v, rule) => Polygon::<8>::new(v)
-                .unwrap()
-                .fill(c)
-                .with_rule(*rule)
-                .draw(d),
-            Target::Line(l, a, w) => l.stroke(c).stroke_width(*w).algorithm(*a).draw(d),
-            Target::Polyline(p, a, w) => Polyline::new(p)
-                .stroke(c)
-                .stroke_width(*w)
-                .algorithm(*a)
-                .draw(d),
-        };
+        draw_with!(self, c, draw, d)
     }
 
+    /// Through `SpanDrawable::draw_spans`.
     fn draw_spans<S: SpanSink<C, Error = core::convert::Infallible>, C: PixelColor>(
         &self,
         s: &mut S,
         c: C,
     ) {
-        let Ok(()) = match self {
-            Target::Tri(t) => t.fill(c).draw_spans(s),
-            Target::Poly(v, rule) => Polygon::<8>::new(v)
-                .unwrap()
-                .fill(c)
-                .with_rule(*rule)
-                .draw_spans(s),
-            Target::Line(l, a, w) => l.stroke(c).stroke_width(*w).algorithm(*a).draw_spans(s),
-            Target::Polyline(p, a, w) => Polyline::new(p)
-                .stroke(c)
-                .stroke_width(*w)
-                .algorithm(*a)
-                .draw_spans(s),
-        };
+        draw_with!(self, c, draw_spans, s)
     }
 }
 
