@@ -45,6 +45,27 @@
 //! side and in 64 bits otherwise; their setup divides in 32 bits when the
 //! operands fit and in 64 or 128 bits only when they do not.
 //!
+//! Every numeric input, its range, and what happens outside it (each
+//! function's docs say the same; arithmetic inside these ranges is proven
+//! not to overflow in comments, with no reliance on wraparound, and the
+//! tests run with overflow checks):
+//!
+//! | Input | Valid range | Outside it |
+//! |---|---|---|
+//! | [`Vertex`] coordinates (triangles, polygons, Gouraud, depth, [`delaunay`]) | 20.12: `[-524288, 524288 - 1/4096]`; every `Vertex` and every raw `i32` ([`Vertex::from_raw`]) | conversions return [`CoordinateOutOfRange`], parsing [`ParseCoordinateError`] |
+//! | [`Point`] to `Vertex` ([`Triangle::from_points`]) | `-524288..=524287` | [`CoordinateOutOfRange`] |
+//! | [`Line`] and [`Polyline`] points | any `i32` | none: 1-pixel lines exact everywhere, clipped; thick lines light nothing beyond the 20.12 range |
+//! | stroke width | any `u32` | 0 draws nothing, over 65535 drawn as 65535 |
+//! | clip rectangles, target bounds | any `Rectangle`, even past `i32::MAX` | clipped; empty ones draw nothing |
+//! | [`Span`], [`Run`], [`SpanSink`] coordinates and lengths | any `i32` / `u32` | empty spans draw nothing; sums saturate at `i32::MAX` |
+//! | [`Polygon`] vertex count | `3..=N` | [`PolygonError`] |
+//! | [`delaunay::Delaunay`] points | up to `N <= 32767` | `N` checked at compile time; more points: [`delaunay::DelaunayError`] |
+//! | colours ([`shade::ShadeColor`]) | each channel `0..=MAX` (`Rgb565` 31/63/31, `Rgb888`, `Gray8` 255, `BinaryColor` 1) | high bits dropped as `Rgb565::new` does |
+//! | depths ([`shade::DepthBuffer`]) | any `u16` (`FAR` never passes); any width and storage | width 0: no rows, nothing passes |
+//! | [`framebuffer`] sizes `W`, `H` | [`framebuffer::buffer_size`] fits `usize` | compile-time error |
+//! | `PixelFormat` pixel indices | any `usize` | pixels outside the row are not written |
+//! | [`mesh`] vectors, angles, camera | any `i32` / `u16` (module docs) | results saturate, or `None` from `checked_*` and `Camera::project` |
+//!
 //! # No panics
 //!
 //! No input to this crate's drawing functions panics, loops without bound

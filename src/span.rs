@@ -8,6 +8,9 @@ use embedded_graphics_core::{
 /// A run of pixels `x_start..x_end` on row `y` (half-open: `x_end` is not
 /// lit). Rasterizers only produce non-empty spans (`x_start < x_end`).
 ///
+/// Any `i32` values are valid: a span with `x_end <= x_start` is empty,
+/// and [`len`](Self::len) (at most `2^32 - 1`) cannot overflow.
+///
 /// # Examples
 ///
 /// ```
@@ -40,6 +43,7 @@ impl Span {
     /// assert_eq!(Span { y: 0, x_start: -2, x_end: 3 }.len(), 5);
     /// ```
     pub fn len(&self) -> u32 {
+        // `abs_diff` of two `i32`s fits `u32`; times 0 or 1: no overflow.
         self.x_end.abs_diff(self.x_start) * u32::from(self.x_end > self.x_start)
     }
 

@@ -62,6 +62,7 @@ impl Vertex {
     }
 
     /// Creates a vertex from raw subpixel units (multiples of 1/4096 pixel).
+    /// Infallible: every `i32` is a coordinate of the 20.12 range.
     ///
     /// # Examples
     ///

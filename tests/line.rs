@@ -1,4 +1,5 @@
-//! Lines and polylines against an independent reference.
+//! Lines and polylines against an independent reference
+//! (`tests/common/line_ref.rs`, shared with `tests/fuzz.rs`).
 //!
 //! The reference takes the stated rule literally: for each major-axis
 //! coordinate, the ideal minor coordinate as an exact `i128` fraction,
@@ -21,6 +22,10 @@ use embedded_graphics_core::{
 use embedded_raster::{sim::SimDisplay, Line, LineAlgorithm, Run};
 use proptest::prelude::*;
 
+#[path = "common/line_ref.rs"]
+mod line_ref;
+use line_ref::{ideal_minor, reference, Window, TIE};
+
 #[path = "line/polyline.rs"]
 mod polyline;
 #[path = "line/thick.rs"]
@@ -28,97 +33,6 @@ mod thick;
 
 const MIN: i64 = i32::MIN as i64;
 const MAX: i64 = i32::MAX as i64;
-
-/// A window of pixels `x0..x0 + w`, `y0..y0 + h`, clamped into `i32`.
-#[derive(Debug, Clone, Copy)]
-struct Window {
-    x0: i64,
-    y0: i64,
-    w: i64,
-    h: i64,
-}
-
-impl Window {
-    fn around(x: i64, y: i64, w: i64, h: i64) -> Self {
-        let x0 = (x - w / 2).clamp(MIN, MAX - w + 1);
-        let y0 = (y - h / 2).clamp(MIN, MAX - h + 1);
-        Self { x0, y0, w, h }
-    }
-
-    fn rect(&self) -> Rectangle {
-        Rectangle::new(
-            Point::new(self.x0 as i32, self.y0 as i32),
-            Size::new(self.w as u32, self.h as u32),
-        )
-    }
-
-    fn contains(&self, x: i64, y: i64) -> bool {
-        (self.x0..self.x0 + self.w).contains(&x) && (self.y0..self.y0 + self.h).contains(&y)
-    }
-}
-
-/// The nearest integer to `num / den` (`den > 0`), ties to the smaller:
-/// the smallest integer `n` with `n >= num / den - 1/2`, i.e.
-/// `ceil((2 num - den) / (2 den))`.
-fn round_ties_down(num: i128, den: i128) -> i128 {
-    TIE.with(|t| t.set((2 * num - den).rem_euclid(2 * den) == 0));
-    let (n, d) = (2 * num - den, 2 * den);
-    -((-n).div_euclid(d))
-}
-
-thread_local! {
-    /// Whether the last rounding by `round_ties_down` was a tie.
-    static TIE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-}
-
-/// The reference minor coordinate at major coordinate `t` of the line, or
-/// `None` if `t` is outside its major range. Returns `(x_major, minor)`.
-fn ideal_minor(a: Point, b: Point, t: i64) -> (bool, Option<i64>) {
-    let (ax, ay, bx, by) = (a.x as i128, a.y as i128, b.x as i128, b.y as i128);
-    let x_major = (bx - ax).abs() >= (by - ay).abs();
-    let (a_maj, a_min, b_maj, b_min) = if x_major {
-        (ax, ay, bx, by)
-    } else {
-        (ay, ax, by, bx)
-    };
-    let t = t as i128;
-    if t < a_maj.min(b_maj) || t > a_maj.max(b_maj) {
-        return (x_major, None);
-    }
-    if a_maj == b_maj {
-        return (x_major, Some(a_min as i64));
-    }
-    // minor = a_min + (b_min - a_min) (t - a_maj) / (b_maj - a_maj)
-    let (mut num, mut den) = (
-        a_min * (b_maj - a_maj) + (b_min - a_min) * (t - a_maj),
-        b_maj - a_maj,
-    );
-    if den < 0 {
-        (num, den) = (-num, -den);
-    }
-    (x_major, Some(round_ties_down(num, den) as i64))
-}
-
-/// The reference pixels inside `win`, as (x, y) in order.
-fn reference(a: Point, b: Point, win: Window) -> Vec<(i64, i64)> {
-    let (x_major, _) = ideal_minor(a, b, 0);
-    let (lo, len) = if x_major {
-        (win.x0, win.w)
-    } else {
-        (win.y0, win.h)
-    };
-    let mut out = vec![];
-    for t in lo..lo + len {
-        if let (_, Some(m)) = ideal_minor(a, b, t) {
-            let (x, y) = if x_major { (t, m) } else { (m, t) };
-            if win.contains(x, y) {
-                out.push((x, y));
-            }
-        }
-    }
-    out.sort();
-    out
-}
 
 /// The pixels `runs` of a line emit in `win`, checked: every run inside
 /// the window, in the major direction, no pixel twice.
@@ -653,4 +567,43 @@ fn variant_error_on_long_lines() {
     assert!(dda_worst <= 1, "{table}");
     // The proven bound for the naive line (`LineAlgorithm`'s docs).
     assert!(naive_worst <= 1537, "{table}");
+}
+
+/// `LinePixels` whose last pixel has major coordinate `i32::MIN` stepped
+/// its end past the range: "attempt to subtract with overflow" with
+/// overflow checks, and without them an end of `i32::MAX`, so the iterator
+/// went on for 2^32 pixels outside the clip rectangle. Found by the fuzz
+/// driver (`tests/fuzz.rs`).
+#[test]
+fn issue_12_line_pixels_ending_at_i32_min() {
+    let (min, max) = (i32::MIN, i32::MAX);
+    let pt = Point::new;
+    for (line, clip, want) in [
+        // x-major, seen in column i32::MIN only.
+        (
+            Line::new(pt(min, 0), pt(min + 10, 0)),
+            Rectangle::new(pt(min, -5), Size::new(1, 10)),
+            pt(min, 0),
+        ),
+        // y-major, seen in row i32::MIN only.
+        (
+            Line::new(pt(3, min + 10), pt(3, min)),
+            Rectangle::new(pt(0, min), Size::new(10, 1)),
+            pt(3, min),
+        ),
+        // The other end of the range.
+        (
+            Line::new(pt(max - 10, 7), pt(max, 7)),
+            Rectangle::new(pt(max, 0), Size::new(1, 10)),
+            pt(max, 7),
+        ),
+    ] {
+        let mut pixels = line.pixels(&clip).unwrap();
+        assert_eq!(pixels.len(), 1);
+        assert_eq!(pixels.next(), Some(want), "{line:?}");
+        assert!(pixels.is_empty(), "{line:?}");
+        assert_eq!(pixels.len(), 0);
+        assert_eq!(pixels.next(), None, "{line:?}");
+        assert_eq!(line.pixels(&clip).unwrap().take(3).count(), 1);
+    }
 }

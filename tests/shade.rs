@@ -474,3 +474,44 @@ fn a_run_stops_at_an_equal_depth() {
     }
     assert!(row.contains(&Rgb888::RED) && row.contains(&Rgb888::BLUE));
 }
+
+/// The documented ranges of the depth buffer and of shading (issue 12):
+/// any width, any depths, and slivers whose steps per pixel are huge (each
+/// row one pixel wide), under overflow checks.
+#[test]
+fn depth_and_shading_ranges() {
+    use embedded_raster::shade::{DepthBuffer, FAR};
+    let mut storage = [0u16; 16];
+    for (width, size) in [
+        (0, Size::new(0, 0)),
+        (1, Size::new(1, 16)),
+        (5, Size::new(5, 3)),
+        (17, Size::new(17, 0)),
+        (u32::MAX, Size::new(u32::MAX, 0)),
+    ] {
+        let depth = DepthBuffer::new(&mut storage, width);
+        assert_eq!(depth.size(), size);
+        depth.clear();
+        assert_eq!(depth.get(u32::MAX, u32::MAX), None);
+        assert_eq!(depth.get(0, 0), (size.height > 0).then_some(FAR));
+    }
+    // Slivers one raw unit wide and up to the whole range tall: per-pixel
+    // steps from 2^44 to past i64, colour and depth at their extremes.
+    for height in [100i64, 1 << 15, 1 << 19, (1 << 31) - 1] {
+        for (x0, x1) in [(0, 1), (2048, 2049), (4095, 4096)] {
+            let t = Triangle::new(v(x0, 0), v(x1, height), v(x0, height));
+            let mut d = SimDisplay::new(8, 8, Rgb888::BLACK);
+            t.gouraud([Rgb888::WHITE, Rgb888::BLACK, Rgb888::new(255, 0, 255)])
+                .draw(&mut d)
+                .unwrap();
+            let mut storage = [0u16; 64];
+            let depth = DepthBuffer::new(&mut storage, 8);
+            depth.clear();
+            t.gouraud([Rgb888::WHITE, Rgb888::BLACK, Rgb888::RED])
+                .with_depth([0, u16::MAX - 1, 1], depth)
+                .draw(&mut d)
+                .unwrap();
+            assert_eq!(d.out_of_bounds_writes(), 0);
+        }
+    }
+}

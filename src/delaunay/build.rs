@@ -183,6 +183,7 @@ impl<'a> Builder<'a> {
     /// Every face in turn: the fallback for a walk that ran too long.
     fn scan(&self, p: Vertex) -> Location {
         let mut outside = 0;
+        // At most `2 MAX_POINTS - 2 < u16::MAX` faces: the cast is exact.
         for f in 0..self.len as u16 {
             let face = self.face(f);
             if let Some(k) = face.v.iter().position(|&v| v == GHOST) {
@@ -267,6 +268,7 @@ impl<'a> Builder<'a> {
 
     /// A new face slot. The storage holds `2n - 2` faces (module docs).
     fn allocate(&mut self) -> u16 {
+        // Below `2 MAX_POINTS - 2 < u16::MAX` (the storage's size): exact.
         let f = self.len as u16;
         self.len += 1;
         f

@@ -204,7 +204,8 @@ impl<const N: usize> Delaunay<N> {
     /// # Errors
     ///
     /// [`DelaunayError::CapacityExceeded`] if `points` has more than `N`
-    /// entries (duplicates included). It is checked first: on error the
+    /// entries (duplicates included). Any vertices: every [`Vertex`] is in
+    /// range and the predicates are exact on all of them. It is checked first: on error the
     /// storage still holds the previous triangulation.
     ///
     /// # Examples

@@ -61,6 +61,9 @@ pub trait PixelFormat {
 
     /// Sets pixels `xs` of `row` to `color`.
     ///
+    /// Any range: an empty or reversed one writes nothing, and the
+    /// built-in formats write nothing unless all of `xs` lies in `row`.
+    ///
     /// # Examples
     ///
     /// ```
@@ -108,7 +111,7 @@ pub trait PixelFormat {
     }
 
     /// The colour of pixel `x` of `row`, or `None` if it is not inside
-    /// `row`.
+    /// `row` (any `x`).
     ///
     /// # Examples
     ///
@@ -122,10 +125,11 @@ pub trait PixelFormat {
     /// ```
     fn read_pixel(row: &[u8], x: usize) -> Option<Self::Color>;
 
-    /// Sets pixel `x` of `row` to `color`.
+    /// Sets pixel `x` of `row` to `color`; any `x`, nothing written
+    /// outside `row`.
     ///
     /// The provided implementation calls [`fill_span`](Self::fill_span)
-    /// with `x..x + 1`.
+    /// with `x..x + 1` (saturating: `usize::MAX` is an empty range).
     ///
     /// # Examples
     ///
@@ -142,7 +146,8 @@ pub trait PixelFormat {
     }
 
     /// Sets the pixels of a 1-pixel line in `buffer`, whose rows are
-    /// `stride` bytes apart; pixels outside `buffer` are ignored.
+    /// `stride` bytes apart; pixels outside `buffer` (negative, or past its
+    /// end at any `stride`) are ignored, without overflow.
     ///
     /// The provided implementation calls [`write_pixel`](Self::write_pixel)
     /// per pixel; the built-in byte formats walk the line through the

@@ -457,14 +457,13 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
     #[inline]
     fn fill_span(&mut self, span: Span, color: F::Color) -> Result<(), Infallible> {
         if let (Ok(y), Ok(x0), Ok(x1)) = (
-            u32::try_from(span.y),
-            u32::try_from(span.x_start),
-            u32::try_from(span.x_end),
+            usize::try_from(span.y),
+            usize::try_from(span.x_start),
+            usize::try_from(span.x_end),
         ) {
-            // u32 to usize is lossless on every target this crate builds for.
-            let start = (y as usize).saturating_mul(Self::STRIDE);
+            let start = y.saturating_mul(Self::STRIDE);
             if let Some(row) = self.data.0.get_mut(start..) {
-                F::fill_span(row, x0 as usize..x1 as usize, color);
+                F::fill_span(row, x0..x1, color);
             }
         }
         Ok(())

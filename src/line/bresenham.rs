@@ -71,6 +71,12 @@ fn step<T: Wide, const X_MAJOR: bool, E>(
 /// [`Framebuffer`](crate::Framebuffer)) walks the pixels itself, one add
 /// and one compare of the Bresenham decision per pixel.
 ///
+/// Made only by the crate, for lines with any `i32` end points and any
+/// clip rectangle: its pixels and its [`len`](Self::len) (at most `2^32`,
+/// reported saturated at `u32::MAX`) are in `i32` and the decision
+/// variable within `[-2^33, 2^33]`, so iterating never overflows, up to a
+/// last pixel at either end of the `i32` range.
+///
 /// # Examples
 ///
 /// ```
@@ -146,6 +152,7 @@ impl LinePixels {
     /// assert_eq!(pixels.len(), 8);
     /// ```
     pub fn len(&self) -> u32 {
+        // `abs_diff` of two `i32`s fits `u32`; `+ 1` saturates.
         if self.first_major > self.last_major {
             return 0;
         }
@@ -284,8 +291,9 @@ impl Iterator for LinePixels {
             }
             self.first_major += 1;
         } else {
-            // Past the end, without stepping beyond i32.
-            self.last_major -= 1;
+            // Past the end: an empty range, without stepping beyond `i32`
+            // (the last pixel may sit at `i32::MIN` or `i32::MAX`).
+            (self.first_major, self.last_major) = (i32::MAX, i32::MIN);
         }
         Some(p)
     }

@@ -72,7 +72,9 @@ use clip::Canonical;
 /// A run of pixels of a line: `len` pixels from `start`, going right
 /// (horizontal) or down (vertical).
 ///
-/// Unlike a [`Span`], a run can end at `i32::MAX`.
+/// Unlike a [`Span`], a run can end at `i32::MAX`. Any field values are
+/// valid: [`rect`](Self::rect) is exact and [`last`](Self::last)
+/// saturates at `i32::MAX`.
 ///
 /// # Examples
 ///
@@ -273,6 +275,12 @@ pub struct Line {
 impl Line {
     /// Creates a line between two pixels.
     ///
+    /// Any `i32` coordinates: 1-pixel lines are exact over the whole `i32`
+    /// plane, clipped to the target with work proportional to the visible
+    /// pixels; thick lines light no pixel outside the 20.12 range
+    /// (`-524288..=524287`, module docs, "Thick lines"). No input
+    /// overflows.
+    ///
     /// # Examples
     ///
     /// ```
@@ -309,7 +317,8 @@ impl Line {
     /// Calls `f` with the runs of the exact 1-pixel line inside `clip`, in
     /// order of growing x (x-major) or y (y-major), and stops at the first
     /// error `f` returns. No allocation, no panic, work proportional to
-    /// the visible pixels.
+    /// the visible pixels. Any `i32` end points and any `clip`, including
+    /// ones reaching past `i32::MAX` (an empty one emits nothing).
     ///
     /// # Examples
     ///
@@ -519,6 +528,10 @@ pub struct StyledLine<C> {
 impl<C> StyledLine<C> {
     /// Sets the stroke width in pixels.
     ///
+    /// Any `u32`: 0 draws nothing; 1 is the 1-pixel line; 2 and more is a
+    /// filled rectangle that wide (module docs, "Thick lines"), widths over
+    /// 65535 drawn as 65535.
+    ///
     /// # Examples
     ///
     /// ```
@@ -594,6 +607,10 @@ pub struct StyledLineVariant<C> {
 
 impl<C> StyledLineVariant<C> {
     /// Sets the stroke width in pixels.
+    ///
+    /// Any `u32`: 0 draws nothing; 1 is the 1-pixel line; 2 and more is a
+    /// filled rectangle that wide (module docs, "Thick lines"), widths over
+    /// 65535 drawn as 65535.
     ///
     /// # Examples
     ///

@@ -41,6 +41,9 @@ pub struct Polyline<'a> {
 impl<'a> Polyline<'a> {
     /// Creates a polyline through `points`.
     ///
+    /// Any number of points (one is a single pixel, none draws nothing),
+    /// with any `i32` coordinates, as for [`Line::new`](crate::Line::new).
+    ///
     /// # Examples
     ///
     /// ```
@@ -154,6 +157,10 @@ pub struct StyledPolyline<'a, C> {
 impl<'a, C> StyledPolyline<'a, C> {
     /// Sets the stroke width in pixels.
     ///
+    /// Any `u32`: 0 draws nothing; 1 is the 1-pixel polyline; 2 and more is a
+    /// filled rectangle that wide per segment (module docs, "Thick lines"), widths over
+    /// 65535 drawn as 65535.
+    ///
     /// # Examples
     ///
     /// ```
@@ -229,6 +236,10 @@ pub struct StyledPolylineVariant<'a, C> {
 
 impl<C> StyledPolylineVariant<'_, C> {
     /// Sets the stroke width in pixels.
+    ///
+    /// Any `u32`: 0 draws nothing; 1 is the 1-pixel polyline; 2 and more is a
+    /// filled rectangle that wide per segment (module docs, "Thick lines"), widths over
+    /// 65535 drawn as 65535.
     ///
     /// # Examples
     ///

@@ -59,7 +59,7 @@ pub enum FillRule {
 }
 
 impl FillRule {
-    /// Whether a pixel with winding number `winding` is filled.
+    /// Whether a pixel with winding number `winding` (any `i32`) is filled.
     ///
     /// # Examples
     ///
@@ -158,7 +158,9 @@ impl<'a, const N: usize> Polygon<'a, N> {
     /// # Errors
     ///
     /// [`PolygonError::TooFewVertices`] for fewer than 3 vertices,
-    /// [`PolygonError::CapacityExceeded`] for more than `N`.
+    /// [`PolygonError::CapacityExceeded`] for more than `N`. Any vertices:
+    /// every [`Vertex`] is in range, and a polygon of them is filled
+    /// exactly, however large, self-intersecting or degenerate.
     ///
     /// # Examples
     ///

@@ -127,6 +127,9 @@ fn emit_row<E>(
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
     let width = i64::from(frame.width);
+    // A sum of at most `N` edge directions of +-1, and the `N` edge records
+    // (56 bytes each) live on the stack, so `|winding| <= N < 2^31`: the
+    // sum cannot overflow.
     let mut winding: i32 = 0;
     let mut run_start = None;
     let mut k = 0;

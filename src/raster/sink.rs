@@ -26,6 +26,13 @@ use crate::{
 /// it for speed, but must still never write outside their storage or
 /// panic if a caller breaks it.
 ///
+/// Ranges: coordinates are any `i32` and lengths any `u32`; the provided
+/// methods saturate at `i32::MAX` rather than overflow. The crate's
+/// implementations, given pixels outside their bounds: a
+/// [`Framebuffer`](crate::Framebuffer) ignores those outside its bytes (a
+/// span past the end of a row may land in the next row), a
+/// [`DrawTargetSink`] passes them on to the `DrawTarget`, which clips.
+///
 /// # Examples
 ///
 /// Count the pixels of a triangle, without drawing it anywhere:

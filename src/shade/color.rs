@@ -27,6 +27,9 @@ pub trait ShadeColor: PixelColor {
     /// The channels.
     fn channels(self) -> [u8; 3];
     /// The colour with these channels; each is at most its [`MAX`](Self::MAX).
+    /// Above it, the built-in colours keep only the channel's low bits
+    /// (`Rgb565`, as `Rgb565::new` does) or read any non-zero value as on
+    /// (`BinaryColor`); `Rgb888` and `Gray8` take every `u8`.
     fn from_channels(channels: [u8; 3]) -> Self;
 }
 
@@ -85,7 +88,8 @@ impl ShadeColor for BinaryColor {
 /// The rounded per-channel average of three colours: for each channel sum
 /// `s`, `(2 s + 3) / 6` in integers, i.e. `s / 3` rounded to the nearest
 /// integer (a third never ends in a half). For `BinaryColor` this is the
-/// majority.
+/// majority. Any colours: the sum is at most `3 * 255`, in `u16`, and the
+/// result at most 255, so nothing overflows.
 ///
 /// # Examples
 ///

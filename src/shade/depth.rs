@@ -46,6 +46,11 @@ impl<'a> DepthBuffer<'a> {
     /// (`storage.len() / width`; a trailing partial row is unused). The
     /// content is kept: call [`clear`](Self::clear) before a frame.
     ///
+    /// Any `width` and storage: width 0 (or wider than the storage) gives
+    /// a buffer of no rows, which nothing passes; a height over `u32::MAX`
+    /// rows is cut there. Triangles drawn with it are clipped to both the
+    /// target and the buffer.
+    ///
     /// # Examples
     ///
     /// ```
@@ -58,11 +63,15 @@ impl<'a> DepthBuffer<'a> {
     /// ```
     pub fn new(storage: &'a mut [u16], width: u32) -> Self {
         let cells = Cell::from_mut(storage).as_slice_of_cells();
-        let height = match width {
-            0 => 0,
-            w => u32::try_from(cells.len() / w as usize).unwrap_or(u32::MAX),
+        let (w, rows) = match usize::try_from(width) {
+            Ok(w) if w > 0 => (w, cells.len() / w),
+            // Width 0, or wider than any slice: no rows.
+            _ => (0, 0),
         };
-        let used = width as usize * height as usize;
+        let height = u32::try_from(rows).unwrap_or(u32::MAX);
+        // `height <= rows = len / w`, so `w * height <= len`: no overflow,
+        // and `height` (at most `rows`, a `usize`) converts exactly.
+        let used = w * height as usize;
         Self {
             cells: &cells[..used],
             width,
@@ -80,8 +89,11 @@ impl<'a> DepthBuffer<'a> {
         self.cells.iter().for_each(|c| c.set(FAR));
     }
 
-    /// The depth at pixel `(x, y)`, `None` outside the buffer.
+    /// The depth at pixel `(x, y)`, `None` outside the buffer (any `x`,
+    /// `y`).
     pub fn get(&self, x: u32, y: u32) -> Option<u16> {
+        // `x < width`, `y < height`: the index is below `width * height`,
+        // the cells' length, so every conversion and sum is exact.
         (x < self.width && y < self.height)
             .then(|| self.cells[y as usize * self.width as usize + x as usize].get())
     }
@@ -102,7 +114,9 @@ impl<'a> DepthBuffer<'a> {
 
     /// Depth-tests the pixels of `span` (inside the buffer) whose 32.32
     /// depth starts at `z` and steps by `dz`, storing the passing ones, and
-    /// calls `run(offset, len)` for each run of passing pixels.
+    /// calls `run(offset, len)` for each run of passing pixels. `|z| < 2^49`
+    /// and `|dz| <= 2^48` (module `shade`: `Linear::new` stores larger steps
+    /// as 0), so `z += dz` cannot overflow.
     fn test_span<E>(
         &self,
         span: Span,
@@ -110,6 +124,8 @@ impl<'a> DepthBuffer<'a> {
         dz: i64,
         mut run: impl FnMut(u32, u32) -> Result<(), E>,
     ) -> Result<(), E> {
+        // The span lies in the buffer (clipped to it): the index is below
+        // `width * height`, the cells' length, so nothing overflows.
         let start = span.y as usize * self.width as usize + span.x_start as usize;
         let row = &self.cells[start..start + span.len() as usize];
         let mut i = 0;
@@ -118,7 +134,7 @@ impl<'a> DepthBuffer<'a> {
             // rounded depth is in 0..=65535 by the interpolation bound
             // (module `shade`), so the cast is exact.
             while i < row.len() && round_fixed(z) as u16 >= row[i].get() {
-                z = z.wrapping_add(dz);
+                z += dz;
                 i += 1;
             }
             let first = i;
@@ -128,7 +144,7 @@ impl<'a> DepthBuffer<'a> {
                     break;
                 }
                 row[i].set(here);
-                z = z.wrapping_add(dz);
+                z += dz;
                 i += 1;
             }
             if first < i {
@@ -188,6 +204,10 @@ pub struct DepthTriangle<'a, S> {
 impl<C> FilledTriangle<C> {
     /// Adds a depth per vertex and the buffer to test against.
     ///
+    /// Any `u16` depths (smaller is nearer; [`FAR`] never passes),
+    /// interpolated as Gouraud colours are, to within 1 of the exact value
+    /// and never outside the vertices' range.
+    ///
     /// See [`DepthTriangle`] for an example.
     pub const fn with_depth(self, z: [u16; 3], depth: DepthBuffer<'_>) -> DepthTriangle<'_, Self> {
         DepthTriangle {
@@ -200,6 +220,10 @@ impl<C> FilledTriangle<C> {
 
 impl<C> GouraudTriangle<C> {
     /// Adds a depth per vertex and the buffer to test against.
+    ///
+    /// Any `u16` depths (smaller is nearer; [`FAR`] never passes),
+    /// interpolated as Gouraud colours are, to within 1 of the exact value
+    /// and never outside the vertices' range.
     ///
     /// # Examples
     ///

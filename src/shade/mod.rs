@@ -135,24 +135,39 @@ impl<const N: usize> Linear<N> {
             let num: i128 = (0..3)
                 .map(|k| a[k] * i128::from(p[(k + 1) % 3].1 - p[(k + 2) % 3].1))
                 .sum();
-            step[n] = i64::try_from(round_div((num * 4096) << 32, frame.area2)).unwrap_or(0);
+            // A step over `2^48` (65536 units per pixel) cannot occur on a
+            // span of two or more pixels (module docs): it is never used,
+            // and is stored as 0 so that every sum below stays far inside
+            // `i64`.
+            step[n] = i64::try_from(round_div((num * 4096) << 32, frame.area2))
+                .ok()
+                .filter(|d| d.unsigned_abs() <= 1 << 48)
+                .unwrap_or(0);
         }
         Self { a0, da, step }
     }
 
-    /// The 32.32 values at the pixel whose barycentric coordinates are `l`.
+    /// The 32.32 values at the pixel whose barycentric coordinates are `l`
+    /// (a lit pixel: `l` in `[0, 2^60]`).
     fn at(&self, l: [i128; 2]) -> [i64; N] {
         core::array::from_fn(|n| {
+            // |da| <= 65535 and |l| <= 2^60: below 2^78, no overflow; the
+            // value is within 2^-12 of one in 0..=65535 (module docs), so
+            // far inside `i64` and the conversion never saturates.
             let frac = (self.da[0][n] * l[0] + self.da[1][n] * l[1] + (1 << 27)) >> 28;
-            ((self.a0[n] << 32) + frac) as i64
+            let v = (self.a0[n] << 32) + frac;
+            i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
         })
     }
 }
 
-/// Rounds a 32.32 value to an integer (`floor(v + 1/2)`).
+/// Rounds a 32.32 value to an integer (`floor(v + 1/2)`). The values
+/// carried are below `2^49` in magnitude (module docs: within `2^-12` of
+/// `0..=65535` at lit pixels, plus at most one step of at most `2^48` past
+/// the last one), so the sum cannot overflow.
 #[inline(always)]
 fn round_fixed(v: i64) -> i64 {
-    v.wrapping_add(HALF) >> 32
+    (v + HALF) >> 32
 }
 
 /// The colours of a span's pixels, stepped in 32.32 fixed point: the
@@ -179,7 +194,8 @@ impl<C: ShadeColor> Iterator for Ramp<C> {
         for ((c, v), d) in steps.take(C::CHANNELS) {
             // In 0..=channel max by the module's bound: the cast is exact.
             *c = round_fixed(*v) as u8;
-            *v = v.wrapping_add(*d);
+            // |v| < 2^48 + 1 and |d| <= 2^48 (`Linear::new`): no overflow.
+            *v += *d;
         }
         Some(C::from_channels(ch))
     }
@@ -215,8 +231,11 @@ impl<C: ShadeColor> GouraudSetup<C> {
         let mut v = self.linear.at(l);
         let d = self.linear.step;
         for k in 0..3 {
-            // Exactly the value `offset` single steps would reach.
-            v[k] = v[k].wrapping_add(d[k].wrapping_mul(i64::from(offset)));
+            // Exactly the value `offset` single steps would reach. An
+            // offset of 1 or more is inside a span of two or more pixels,
+            // whose ends both lie within 2^-12 of 0..=65535, so `d * offset`
+            // is at most about 65536 * 2^32 < 2^49: no overflow.
+            v[k] += d[k] * i64::from(offset);
         }
         Ramp {
             v,
@@ -230,6 +249,11 @@ impl<C: ShadeColor> GouraudSetup<C> {
 impl Triangle {
     /// Styles the triangle with one colour per vertex, blended across it
     /// (Gouraud shading), ready to draw.
+    ///
+    /// Any colours and any triangle in the 20.12 range: each channel is
+    /// interpolated in its own range ([`ShadeColor`]) to within 1 unit of
+    /// the exact value and never outside the vertices' values (module
+    /// docs: the error bound and the sizes of the intermediates).
     ///
     /// # Examples
     ///

@@ -52,7 +52,9 @@ pub struct Triangle {
 }
 
 impl Triangle {
-    /// Creates a triangle from its corners.
+    /// Creates a triangle from its corners: any [`Vertex`]es (all are in
+    /// range), drawn exactly on any clip rectangle, degenerate ones
+    /// (collinear corners) lighting nothing.
     ///
     /// # Examples
     ///

@@ -229,7 +229,8 @@ impl SubpixelPrecision {
         }
     }
 
-    /// The precision with `bits` fractional bits, if it is 0, 4, 8 or 12.
+    /// The precision with `bits` fractional bits, if it is 0, 4, 8 or 12
+    /// (any other `u32`: `None`).
     ///
     /// # Examples
     ///
@@ -253,7 +254,9 @@ impl SubpixelPrecision {
     }
 
     /// `v` rounded to the nearest point of this precision's grid, ties to
-    /// even (see the type's docs).
+    /// even (see the type's docs). Any vertex: a coordinate that would
+    /// round past the top of the 20.12 range goes to the grid point below
+    /// instead (computed in `i64`, no overflow).
     pub fn snap(self, v: Vertex) -> Vertex {
         let shift = 12 - self.bits();
         if shift == 0 {
