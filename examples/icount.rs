@@ -429,22 +429,7 @@ mod target {
         }
 
         // Lines: 1 px (short, long, ends far off-screen) and thick.
-        let star = |k: i32, len: i32| {
-            let dirs = [
-                (2, 0),
-                (2, 1),
-                (2, 2),
-                (1, 2),
-                (0, 2),
-                (-1, 2),
-                (-2, 2),
-                (-2, 1),
-            ];
-            let (dx, dy) = dirs[(k % 8) as usize];
-            let half = Point::new(dx * len / 4, dy * len / 4);
-            let centre = Point::new(160 + k / 8, 120);
-            Line::new(centre - half, centre + half)
-        };
+        let star = builtin_scene::star_line;
         for (count, len, width, label) in [
             (64, 16, 1, "1 px wide, 16 px long"),
             (16, 200, 1, "1 px wide, 200 px long"),

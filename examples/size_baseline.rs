@@ -6,12 +6,9 @@
 
 #![cfg_attr(target_arch = "arm", no_std, no_main)]
 
-#[path = "common/builtin_scene.rs"]
-mod builtin_scene;
-
-#[cfg(target_arch = "arm")]
-#[path = "common/semihosting.rs"]
-mod semihosting;
+#[macro_use]
+#[path = "common/size_firmware.rs"]
+mod size_firmware;
 
 /// Builds `size_triangles`' triangles without drawing them, and checksums
 /// the untouched (black) framebuffer.
@@ -27,23 +24,4 @@ fn draw(fb: &mut builtin_scene::SceneBuffer) -> u32 {
     builtin_scene::fnv1a32(black_box(fb).as_bytes())
 }
 
-#[cfg(target_arch = "arm")]
-mod target {
-    use cortex_m_rt::entry;
-    use cortex_m_semihosting::hprintln;
-
-    use super::builtin_scene::SceneBuffer;
-
-    #[entry]
-    fn main() -> ! {
-        static mut FB: SceneBuffer = SceneBuffer::new();
-        hprintln!("baseline fnv1a32=0x{:08x}", super::draw(FB));
-        super::semihosting::exit_success()
-    }
-}
-
-#[cfg(not(target_arch = "arm"))]
-fn main() {
-    let mut fb = Box::new(builtin_scene::SceneBuffer::new());
-    println!("baseline fnv1a32=0x{:08x}", draw(&mut fb));
-}
+size_firmware!("baseline", draw);

@@ -7,12 +7,9 @@
 
 #![cfg_attr(target_arch = "arm", no_std, no_main)]
 
-#[path = "common/builtin_scene.rs"]
-mod builtin_scene;
-
-#[cfg(target_arch = "arm")]
-#[path = "common/semihosting.rs"]
-mod semihosting;
+#[macro_use]
+#[path = "common/size_firmware.rs"]
+mod size_firmware;
 
 use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
 use embedded_raster::SpanDrawable;
@@ -31,23 +28,4 @@ fn draw(fb: &mut builtin_scene::SceneBuffer) -> u32 {
     builtin_scene::fnv1a32(fb.as_bytes())
 }
 
-#[cfg(target_arch = "arm")]
-mod target {
-    use cortex_m_rt::entry;
-    use cortex_m_semihosting::hprintln;
-
-    use super::builtin_scene::SceneBuffer;
-
-    #[entry]
-    fn main() -> ! {
-        static mut FB: SceneBuffer = SceneBuffer::new();
-        hprintln!("triangles fnv1a32=0x{:08x}", super::draw(FB));
-        super::semihosting::exit_success()
-    }
-}
-
-#[cfg(not(target_arch = "arm"))]
-fn main() {
-    let mut fb = Box::new(builtin_scene::SceneBuffer::new());
-    println!("triangles fnv1a32=0x{:08x}", draw(&mut fb));
-}
+size_firmware!("triangles", draw);

@@ -88,6 +88,26 @@ pub fn irregular(x: i32, y: i32, size: i32) -> Triangle {
     )
 }
 
+/// Line `k` of a star of 1-pixel lines `len` px long through the screen's
+/// centre, in 8 directions (horizontal, 2:1, diagonal, 1:2, vertical and
+/// their mirrors), moved right by `k / 8` px.
+pub fn star_line(k: i32, len: i32) -> Line {
+    const DIRECTIONS: [(i32, i32); 8] = [
+        (2, 0),
+        (2, 1),
+        (2, 2),
+        (1, 2),
+        (0, 2),
+        (-1, 2),
+        (-2, 2),
+        (-2, 1),
+    ];
+    let (dx, dy) = DIRECTIONS[k.rem_euclid(8) as usize];
+    let half = Point::new(dx * len / 4, dy * len / 4);
+    let centre = Point::new(160 + k / 8, 120);
+    Line::new(centre - half, centre + half)
+}
+
 /// A small deterministic generator (xorshift32).
 #[derive(Debug, Clone)]
 pub struct Rng(u32);
