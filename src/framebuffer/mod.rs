@@ -95,6 +95,7 @@ use core::{convert::Infallible, fmt, marker::PhantomData, ops::Range, slice::Chu
 use embedded_graphics_core::{
     draw_target::DrawTarget,
     geometry::{Dimensions, OriginDimensions, Point, Size},
+    image::GetPixel,
     primitives::Rectangle,
     Pixel,
 };
@@ -505,6 +506,34 @@ impl<F, const W: usize, const H: usize, const N: usize> OriginDimensions
     fn size(&self) -> Size {
         let side = |n: usize| u32::try_from(n).unwrap_or(u32::MAX);
         Size::new(side(W), side(H))
+    }
+}
+
+/// The colour of a pixel, as embedded-graphics' image and sprite code asks
+/// for it: [`Framebuffer::pixel`].
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{image::GetPixel, pixelcolor::Gray8, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
+///
+/// fn brightest<T: GetPixel<Color = Gray8>>(image: &T, points: &[Point]) -> Option<Gray8> {
+///     points.iter().filter_map(|&p| image.pixel(p)).max_by_key(|c| c.luma())
+/// }
+///
+/// let mut fb = Framebuffer::<Gray8Bytes, 4, 4, { buffer_size::<Gray8Bytes>(4, 4) }>::new();
+/// Pixel(Point::new(2, 1), Gray8::new(200)).draw(&mut fb)?;
+/// assert_eq!(brightest(&fb, &[Point::new(0, 0), Point::new(2, 1), Point::new(9, 9)]), Some(Gray8::new(200)));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> GetPixel
+    for Framebuffer<F, W, H, N>
+{
+    type Color = F::Color;
+
+    fn pixel(&self, p: Point) -> Option<F::Color> {
+        Framebuffer::pixel(self, p)
     }
 }
 
