@@ -630,3 +630,34 @@ fn framebuffer_can_be_static() {
         Framebuffer::new();
     assert_eq!(FB.pixel(Point::new(9, 2)), Some(BinaryColor::Off));
 }
+
+/// A span past the end of its row, which no rasterizer of the crate sends
+/// (spans are clipped to the sink's bounds), is not wrapped into the next
+/// row: the framebuffer's storage holds the rows back to back.
+#[test]
+fn sink_span_past_the_row_end_stays_out_of_the_next_row() {
+    use embedded_raster::{Span, SpanSink};
+    let mut fb = Small::new();
+    fb.fill_span(
+        Span {
+            y: 1,
+            x_start: 5,
+            x_end: 9,
+        },
+        Rgb565::RED,
+    )
+    .unwrap();
+    fb.fill_span(
+        Span {
+            y: 4,
+            x_start: 6,
+            x_end: 8,
+        },
+        Rgb565::RED,
+    )
+    .unwrap();
+    for y in 0..5 {
+        assert_eq!(fb.pixel(Point::new(0, y)), Some(Rgb565::BLACK), "row {y}");
+        assert_eq!(fb.pixel(Point::new(1, y)), Some(Rgb565::BLACK), "row {y}");
+    }
+}

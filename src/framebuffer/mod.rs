@@ -462,8 +462,13 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
             usize::try_from(span.x_start),
             usize::try_from(span.x_end),
         ) {
-            let start = y.saturating_mul(Self::STRIDE);
-            if let Some(row) = self.data.0.get_mut(start..) {
+            // Its own row only: a span past the row's end (a caller breaking
+            // the sink's contract) is dropped, not wrapped into the next row.
+            // `y < H`, so `y * STRIDE + STRIDE <= N`: no overflow.
+            let row = (y < H).then(|| y * Self::STRIDE);
+            if let Some(row) =
+                row.and_then(|start| self.data.0.get_mut(start..start + Self::STRIDE))
+            {
                 F::fill_span(row, x0..x1, color);
             }
         }
