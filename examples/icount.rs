@@ -197,7 +197,8 @@ mod target {
         }
 
         /// The triangles' edge-stepping width: 32 bits when the bounding
-        /// box is under 131,070 px a side.
+        /// box spans under 2^29 raw units (131,072 px) a side, the rule of
+        /// the library's frame.
         fn width(self) -> &'static str {
             let Batch::Triangles(ts) = self else {
                 return "-";
@@ -208,7 +209,7 @@ mod target {
                     let (lo, hi) = (c.iter().min().unwrap(), c.iter().max().unwrap());
                     i64::from(*hi) - i64::from(*lo)
                 };
-                side(xs) < (131_070 << 12) && side(ys) < (131_070 << 12)
+                side(xs) < 1 << 29 && side(ys) < 1 << 29
             };
             match (
                 ts.iter().all(|(t, _)| narrow(t)),

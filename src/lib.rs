@@ -41,9 +41,10 @@
 //! from numbers, strings and [`Point`]s are checked and report
 //! [`CoordinateOutOfRange`]. Any triangle of in-range vertices is
 //! rasterized exactly, on any clip rectangle. Per triangle, the edges
-//! step in 32 bits when the triangle's bounding box is under 131,070 px a
-//! side and in 64 bits otherwise; their setup divides in 32 bits when the
-//! operands fit and in 64 or 128 bits only when they do not.
+//! step in 32 bits when the triangle's bounding box spans under 2^29 raw
+//! units (131,072 px) a side and in 64 bits otherwise; their setup divides
+//! in 32 bits when the operands fit and in 64 bits only when they do not
+//! (never wider).
 //!
 //! Every numeric input, its range, and what happens outside it (each
 //! function's docs say the same; arithmetic inside these ranges is proven

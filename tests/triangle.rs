@@ -186,7 +186,7 @@ fn widest_triangles_are_exact() {
 
 #[test]
 fn triangles_at_the_32_bit_bound_are_exact() {
-    // Bounding boxes just under and just over 131,070 px a side: the edges
+    // Bounding boxes just under and just over 131,072 px a side: the edges
     // step in i32 and in i64 respectively.
     for side in [131_060i64, 131_080] {
         let px = 4096;

@@ -315,20 +315,16 @@ fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Option<&mut [u
     row.get_mut(xs.start.checked_mul(B)?..xs.end.checked_mul(B)?)
 }
 
-/// Fills `bytes` with copies of `pixel`, from the start; a last partial
-/// copy only if `bytes.len()` is not a multiple of `B`.
+/// Fills `bytes`, whole pixels, with copies of `pixel`.
 ///
 /// One `memset` if all bytes of `pixel` are equal (black, white, any
-/// grey). Otherwise the widest safe stores: the bytes up to the first
-/// 4-byte boundary one at a time, then aligned 32-bit words of the
-/// repeating pattern (for 2- and 4-byte pixels one word repeated, which
-/// the compiler turns into multi-register stores on a Cortex-M and vector
-/// stores on a host; for 3-byte pixels a block of three words), then the
-/// last bytes. Spans under 16 pixels are written pixel by pixel: for them
-/// the word setup costs more than it saves. On other architectures than
-/// 32-bit ARM every span is a pixel loop, which their compilers turn into
-/// vector stores by themselves (measured faster on x86-64 than the word
-/// path).
+/// grey). Otherwise, on 32-bit ARM and for spans of 16 pixels or more, the
+/// widest safe stores ([`fill_words`]): aligned 32-bit words of the
+/// repeating pattern, which the compiler turns into runs of `strd` on a
+/// Cortex-M4. Shorter spans, and every span on other architectures, are a
+/// plain pixel loop: the word setup costs more than it saves on short
+/// spans, and hosts' compilers vectorize the loop themselves (measured
+/// faster on x86-64 than the word path).
 #[inline(always)]
 fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     let Some(&first) = pixel.first() else { return };

@@ -12,8 +12,8 @@
 //!
 //! Widths: the whole setup and the stepping run in `i32` when the
 //! vertices lie within `2^29` raw units (131,072 px) of the frame's
-//! origin, which holds for every triangle whose bounding box is under
-//! 131,070 px a side; products are taken in `i64` and divided in 32 bits
+//! origin, which holds for every triangle whose bounding box spans under
+//! 2^29 raw units a side; products are taken in `i64` and divided in 32 bits
 //! when they fit. Otherwise everything runs in `i64` (products in `i128`),
 //! exact over the whole 20.12 range. A triangle outside the clip costs one
 //! bounding-box test.
