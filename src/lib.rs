@@ -96,6 +96,7 @@ pub mod framebuffer;
 pub mod line;
 pub mod mesh;
 mod polygon;
+pub mod prelude;
 mod raster;
 pub mod shade;
 #[cfg(feature = "sim")]
@@ -109,6 +110,10 @@ mod vertex;
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+/// The `embedded-graphics-core` this crate is built on (its `DrawTarget`,
+/// `Drawable`, colours and geometry), for crates that do not depend on it
+/// or on `embedded-graphics` themselves.
+pub use embedded_graphics_core;
 pub use error::CoordinateOutOfRange;
 pub use fixed::types::I20F12;
 pub use framebuffer::Framebuffer;

@@ -24,6 +24,8 @@ use std::prelude::rust_2021::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::{format, writeln};
 
+use embedded_graphics_core::geometry::OriginDimensions;
+
 use super::{parse_scene, render_scene_with};
 use crate::{triangle::SubpixelPrecision, triangle::TriangleAlgorithm};
 
@@ -151,12 +153,13 @@ where
 /// What every command line does with its parsed arguments: `Ok(None)`
 /// (`--help`) prints the usage on stdout; a usage error prints
 /// `NAME: message`, a blank line and the usage on stderr ([`EXIT_USAGE`]);
-/// otherwise `act` runs, and its error is one line on stderr
-/// ([`EXIT_FAILURE`]).
+/// otherwise `act` runs: its summary of what it did is one line on stderr
+/// (stdout stays for requested output such as `--stats`), its error is one
+/// line on stderr ([`EXIT_FAILURE`]).
 pub(super) fn run_parsed<O, W: Write>(
     (name, usage): (&str, &str),
     parsed: Result<Option<O>, String>,
-    act: impl FnOnce(&O, &mut W) -> Result<(), String>,
+    act: impl FnOnce(&O, &mut W) -> Result<String, String>,
     mut stdout: W,
     mut stderr: impl Write,
 ) -> i32 {
@@ -175,7 +178,10 @@ pub(super) fn run_parsed<O, W: Write>(
         }
     };
     match act(&options, &mut stdout) {
-        Ok(()) => EXIT_OK,
+        Ok(summary) => {
+            let _ = writeln!(stderr, "{name}: {summary}");
+            EXIT_OK
+        }
         Err(message) => {
             let _ = writeln!(stderr, "{message}");
             EXIT_FAILURE
@@ -261,7 +267,7 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
 }
 
 /// Everything after the command line; the error is the one stderr line.
-fn render(options: &Options, stdout: &mut impl Write) -> Result<(), String> {
+fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> {
     let scene_path = options.scene.display();
     refuse_overwriting(options)?;
     let bytes =
@@ -304,7 +310,17 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<(), String> {
         writeln!(stdout, "{}", rendered.stats.to_json())
             .map_err(|e| format!("cannot write to stdout: {e}"))?;
     }
-    Ok(())
+    let size = rendered.display.size();
+    let stats = rendered.stats;
+    Ok(format!(
+        "wrote {}: {}x{}, {} primitives, {} pixels written, rasterized in {:.3} ms",
+        options.output.display(),
+        size.width,
+        size.height,
+        stats.primitives,
+        stats.pixels_written,
+        stats.raster_time.as_secs_f64() * 1e3
+    ))
 }
 
 /// Refuses an output that is the scene file, or two outputs that are one

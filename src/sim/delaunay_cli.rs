@@ -162,7 +162,7 @@ fn parse_size(text: &str) -> Option<(u32, u32)> {
 }
 
 /// Everything after the command line; the error is the one stderr line.
-fn triangulate_file(options: &Options) -> Result<(), String> {
+fn triangulate_file(options: &Options) -> Result<String, String> {
     let path = options.points.display();
     let text = std::fs::read(&options.points).map_err(|e| format!("{path}: cannot read: {e}"))?;
     let text = String::from_utf8(text).map_err(|_| format!("{path}: not valid UTF-8"))?;
@@ -173,7 +173,13 @@ fn triangulate_file(options: &Options) -> Result<(), String> {
         .map_err(|e| format!("{path}: {e}"))?;
     let scene = scene_text(&points, mesh.indices(), options.size, options.gouraud);
     std::fs::write(&options.output, scene)
-        .map_err(|e| format!("{}: cannot write: {e}", options.output.display()))
+        .map_err(|e| format!("{}: cannot write: {e}", options.output.display()))?;
+    Ok(format!(
+        "wrote {}: {} points, {} triangles",
+        options.output.display(),
+        points.len(),
+        mesh.indices().count()
+    ))
 }
 
 /// Parses a point file: one `x y` pair per line; blank lines and `#`

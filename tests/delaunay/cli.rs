@@ -56,8 +56,15 @@ fn run(points: &str, extra: &[&str]) -> (i32, String, Option<String>) {
 /// the triangle count.
 fn check_point_file(text: &str, size: (u32, u32)) -> usize {
     let (code, err, scene) = run(text, &["--size", &format!("{}x{}", size.0, size.1)]);
-    assert_eq!((code, err.as_str()), (cli::EXIT_OK, ""));
+    assert_eq!(code, cli::EXIT_OK, "{err}");
     let scene = parse_scene(&scene.unwrap()).expect("render accepts the scene");
+    // The summary line counts the scene's triangles.
+    let tail = format!(" triangles\n");
+    let count = format!(", {}{tail}", scene.commands().len());
+    assert!(
+        err.starts_with("delaunay: wrote ") && err.ends_with(&count),
+        "{err}"
+    );
     let points: Vec<Pt> = delaunay_cli::parse_points(text)
         .unwrap()
         .iter()
