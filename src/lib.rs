@@ -5,6 +5,39 @@
 //! own [`Framebuffer`]. The same code runs on a Cortex-M and, with the `sim`
 //! feature, in a host simulator that renders scene files to PNG.
 //!
+//! ```toml
+//! [dependencies]
+//! embedded-raster = "0.1"
+//! embedded-graphics = "0.8"
+//! ```
+//!
+//! # Example
+//!
+//! A triangle with fractional vertices, drawn into a 320 x 240 Rgb565
+//! framebuffer whose bytes go to the display as they are:
+//!
+//! ```
+//! use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+//! use embedded_raster::{
+//!     framebuffer::{buffer_size, Rgb565Be},
+//!     prelude::*,
+//!     Framebuffer, Vertex,
+//! };
+//!
+//! let mut fb = Framebuffer::<Rgb565Be, 320, 240, { buffer_size::<Rgb565Be>(320, 240) }>::new();
+//! fb.clear(Rgb565::BLACK)?;
+//!
+//! let v = |x: f32, y: f32| Vertex::try_from_num(x, y);
+//! embedded_raster::Triangle::new(v(10.0, 12.5)?, v(300.25, 40.0)?, v(120.0, 230.75)?)
+//!     .fill(Rgb565::RED)
+//!     .draw_spans(&mut fb)?; // straight into the rows; `.draw(&mut fb)` works too
+//!
+//! assert_eq!(fb.pixel(Point::new(120, 200)), Some(Rgb565::RED));
+//! let bytes: &[u8] = fb.as_bytes(); // big-endian Rgb565, as SPI panels take it
+//! assert_eq!(bytes.len(), 320 * 240 * 2);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
 //! # Map
 //!
 //! | module | what it holds |

@@ -446,6 +446,7 @@ macro_rules! byte_format {
                 read_bytes::<$bytes>(row, x).map($decode)
             }
 
+            #[inline]
             fn write_pixel(row: &mut [u8], x: usize, color: $color) {
                 if let Some(px) = byte_span::<$bytes>(row, x..x.saturating_add(1)) {
                     for (dst, src) in px.iter_mut().zip($encode(color)) {

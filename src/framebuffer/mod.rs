@@ -359,9 +359,13 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
     where
         I: IntoIterator<Item = Pixel<F::Color>>,
     {
+        // One bounds test per coordinate and one store: the bytes from the
+        // pixel's row on, so the format's own check is on the same slice.
+        let data = &mut self.data.0[..];
         for Pixel(p, color) in pixels {
             if let Some((x, y)) = Self::locate(p) {
-                if let Some(row) = self.row_mut(y) {
+                // `y < H`, so `y * STRIDE < N`: the product cannot overflow.
+                if let Some(row) = data.get_mut(y * Self::STRIDE..) {
                     F::write_pixel(row, x, color);
                 }
             }
