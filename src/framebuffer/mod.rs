@@ -87,6 +87,8 @@
 //! ```
 
 mod format;
+#[cfg(feature = "sim")]
+mod png;
 
 pub use format::{BinaryMsb, Gray8Bytes, PixelFormat, Rgb565Be, Rgb565Le, Rgb888Bytes};
 
@@ -95,7 +97,7 @@ use core::{convert::Infallible, fmt, marker::PhantomData, ops::Range, slice::Chu
 use embedded_graphics_core::{
     draw_target::DrawTarget,
     geometry::{Dimensions, OriginDimensions, Point, Size},
-    image::GetPixel,
+    image::{GetPixel, ImageDrawable},
     primitives::Rectangle,
     Pixel,
 };
@@ -304,12 +306,6 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     fn row(&self, y: usize) -> Option<&[u8]> {
         let start = y.checked_mul(Self::STRIDE)?;
         self.data.0.get(start..start.checked_add(Self::STRIDE)?)
-    }
-
-    /// The bytes of row `y`, or `None` if there is no such row.
-    fn row_mut(&mut self, y: usize) -> Option<&mut [u8]> {
-        let start = y.checked_mul(Self::STRIDE)?;
-        self.data.0.get_mut(start..start.checked_add(Self::STRIDE)?)
     }
 
     /// Rows `ys` as byte slices, and the pixels `xs` of each to draw.
@@ -543,6 +539,70 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> GetPixel
 
     fn pixel(&self, p: Point) -> Option<F::Color> {
         Framebuffer::pixel(self, p)
+    }
+}
+
+/// The framebuffer as an embedded-graphics image: `Image::new(&fb, at)`
+/// draws it onto another target (a display driver, a larger framebuffer)
+/// with one `fill_contiguous` of its pixels, or a part of it with
+/// `Image::new(&fb.sub_image(&area), at)`.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{image::Image, pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+/// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
+///
+/// let mut sprite = Framebuffer::<Gray8Bytes, 4, 2, { buffer_size::<Gray8Bytes>(4, 2) }>::new();
+/// Pixel(Point::new(3, 1), Gray8::new(9)).draw(&mut sprite)?;
+///
+/// let mut screen = Framebuffer::<Gray8Bytes, 8, 8, { buffer_size::<Gray8Bytes>(8, 8) }>::new();
+/// Image::new(&sprite, Point::new(2, 5)).draw(&mut screen)?;
+/// assert_eq!(screen.pixel(Point::new(5, 6)), Some(Gray8::new(9)));
+///
+/// let corner = sprite.sub_image(&Rectangle::new(Point::new(2, 1), Size::new(2, 1)));
+/// Image::new(&corner, Point::new(0, 0)).draw(&mut screen)?;
+/// assert_eq!(screen.pixel(Point::new(1, 0)), Some(Gray8::new(9)));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> ImageDrawable
+    for Framebuffer<F, W, H, N>
+{
+    type Color = F::Color;
+
+    fn draw<D: DrawTarget<Color = F::Color>>(&self, target: &mut D) -> Result<(), D::Error> {
+        self.draw_sub_image(target, &self.bounding_box())
+    }
+
+    /// Draws the pixels of `area` (in the framebuffer's coordinates) with
+    /// `area`'s top-left corner at the target's origin; the part of `area`
+    /// outside the framebuffer is not drawn.
+    fn draw_sub_image<D: DrawTarget<Color = F::Color>>(
+        &self,
+        target: &mut D,
+        area: &Rectangle,
+    ) -> Result<(), D::Error> {
+        let Some((xs, ys)) = clip_to(area, &self.bounding_box()) else {
+            return Ok(());
+        };
+        // Where the visible part lands on the target: past `i32` (an area
+        // starting more than 2^31 px before the framebuffer) is nowhere.
+        let offset = |start: usize, corner: i32| {
+            let start = i64::try_from(start).ok()?;
+            i32::try_from(start - i64::from(corner)).ok()
+        };
+        let (Some(x), Some(y)) = (
+            offset(xs.start, area.top_left.x),
+            offset(ys.start, area.top_left.y),
+        ) else {
+            return Ok(());
+        };
+        let side = |n: usize| u32::try_from(n).unwrap_or(u32::MAX);
+        let visible = Rectangle::new(Point::new(x, y), Size::new(side(xs.len()), side(ys.len())));
+        let rows = ys.filter_map(|y| self.row(y));
+        // Every pixel of `xs` is in its row, so no colour is skipped.
+        let colors = rows.flat_map(|row| xs.clone().filter_map(move |x| F::read_pixel(row, x)));
+        target.fill_contiguous(&visible, colors)
     }
 }
 

@@ -342,20 +342,7 @@ impl<C: PixelColor + Into<Rgb888>> SimDisplay<C> {
     /// # Ok::<(), std::io::Error>(())
     /// ```
     pub fn write_png<W: Write>(&self, w: W) -> io::Result<()> {
-        let mut encoder = png::Encoder::new(w, self.size.width, self.size.height);
-        encoder.set_color(png::ColorType::Rgb);
-        encoder.set_depth(png::BitDepth::Eight);
-        let data: Vec<u8> = self
-            .pixels
-            .iter()
-            .flat_map(|&c| {
-                let c: Rgb888 = c.into();
-                [c.r(), c.g(), c.b()]
-            })
-            .collect();
-        let mut writer = encoder.write_header().map_err(png_error)?;
-        writer.write_image_data(&data).map_err(png_error)?;
-        writer.finish().map_err(png_error)
+        write_rgb_png(w, self.size, self.pixels.iter().map(|&c| c.into()))
     }
 
     /// Saves the display as an 8-bit RGB PNG file at `path`; see
@@ -378,11 +365,34 @@ impl<C: PixelColor + Into<Rgb888>> SimDisplay<C> {
     /// # Ok::<(), std::io::Error>(())
     /// ```
     pub fn save_png<P: AsRef<Path>>(&self, path: P) -> io::Result<()> {
-        let file = std::fs::File::create(path)?;
-        let mut w = io::BufWriter::new(file);
-        self.write_png(&mut w)?;
-        w.flush()
+        save_to(path.as_ref(), |w| self.write_png(w))
     }
+}
+
+/// Encodes `size.width * size.height` pixels, row by row, as an 8-bit RGB
+/// PNG.
+pub(crate) fn write_rgb_png<W: Write>(
+    w: W,
+    size: Size,
+    pixels: impl Iterator<Item = Rgb888>,
+) -> io::Result<()> {
+    let mut encoder = png::Encoder::new(w, size.width, size.height);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    let data: Vec<u8> = pixels.flat_map(|c| [c.r(), c.g(), c.b()]).collect();
+    let mut writer = encoder.write_header().map_err(png_error)?;
+    writer.write_image_data(&data).map_err(png_error)?;
+    writer.finish().map_err(png_error)
+}
+
+/// Creates the file at `path` and has `write` fill it through a buffer.
+pub(crate) fn save_to(
+    path: &Path,
+    write: impl FnOnce(&mut io::BufWriter<std::fs::File>) -> io::Result<()>,
+) -> io::Result<()> {
+    let mut w = io::BufWriter::new(std::fs::File::create(path)?);
+    write(&mut w)?;
+    w.flush()
 }
 
 fn png_error(e: png::EncodingError) -> io::Error {

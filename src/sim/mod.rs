@@ -37,7 +37,7 @@
 pub mod cli;
 mod cost;
 pub mod delaunay_cli;
-mod display;
+pub(crate) mod display;
 mod render;
 mod scene;
 
