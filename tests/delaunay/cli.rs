@@ -59,8 +59,7 @@ fn check_point_file(text: &str, size: (u32, u32)) -> usize {
     assert_eq!(code, cli::EXIT_OK, "{err}");
     let scene = parse_scene(&scene.unwrap()).expect("render accepts the scene");
     // The summary line counts the scene's triangles.
-    let tail = format!(" triangles\n");
-    let count = format!(", {}{tail}", scene.commands().len());
+    let count = format!(", {} triangles\n", scene.commands().len());
     assert!(
         err.starts_with("delaunay: wrote ") && err.ends_with(&count),
         "{err}"
