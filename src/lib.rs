@@ -123,6 +123,8 @@
 extern crate std;
 
 mod clip;
+#[cfg(feature = "embedded-graphics")]
+mod convert;
 pub mod delaunay;
 mod error;
 pub mod framebuffer;
