@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Prints a Markdown table of BENCHMARKS.md from criterion's results.
 
-    python3 benches/report.py [triangles|polygons] [TARGET_DIR]
+    python3 benches/report.py [triangles|pools|polygons|framebuffer] [TARGET_DIR]
 
 Run after `cargo bench --bench NAME`; reads the median of each benchmark
 from TARGET_DIR/criterion/<group>/<bench>/.../new/estimates.json.
@@ -50,9 +50,20 @@ def result(group, peer):
     median = json.loads((new / "estimates.json").read_text())["median"]["point_estimate"]
     bench = json.loads((new / "benchmark.json").read_text())
     count = bench.get("value_str") or "1"
-    return median, bench["throughput"]["Elements"], int(count) if count.isdigit() else 1
+    elements = (bench.get("throughput") or {}).get("Elements", 0)
+    return median, elements, int(count) if count.isdigit() else 1
 
 
+if BENCH == "framebuffer":
+    # embedded-graphics drawing on both framebuffers; "null" stores nothing.
+    print("| drawing | embedded-raster µs | embedded-graphics µs | no stores µs | embedded-graphics time ÷ embedded-raster time |")
+    print("|---|---|---|---|---|")
+    for g in ["text transparent", "text on a background", "filled circles", "scattered pixels"]:
+        r = {p: result("framebuffer " + g, p) for p in ["embedded-raster", "embedded-graphics", "null"]}
+        us = lambda p: "-" if r[p] is None else f"{r[p][0] / 1e3:.1f}"
+        print(f"| {g} | {us('embedded-raster')} | {us('embedded-graphics')} | {us('null')} "
+              f"| {r['embedded-graphics'][0] / r['embedded-raster'][0]:.2f}x |")
+    sys.exit(0)
 groups, peers, ratios, unit = SUITES[BENCH]
 first = peers[0]
 if BENCH == "pools":
