@@ -55,6 +55,8 @@
 //! | [`mesh`] | fixed-point 3D without floats: table sine/cosine, rotation, perspective projection to vertices and depths, an allocation-free latitude/longitude sphere |
 //! | [`framebuffer`] | [`Framebuffer`], an owned const-sized [`DrawTarget`] and [`SpanSink`] for Rgb565 (both byte orders), Rgb888, Gray8 and 1-bit, filled with aligned word stores |
 //! | `sim` (feature `sim`) | the host simulator: an overdraw-counting display, PNG export, the scene-file renderer |
+//! | [`prelude`] | the crate's traits, to glob-import beside embedded-graphics' prelude without name clashes |
+//! | `convert` (feature `embedded-graphics`, private) | [`Triangle`], [`Line`] and [`Polyline`] from embedded-graphics' shapes of the same name |
 //!
 //! # The sampling rule
 //!
