@@ -71,3 +71,16 @@ pub(crate) fn row_major_skips(area: &Rectangle, bounds: &Rectangle) -> Option<(u
         .checked_add(diff(b.x0, a.x0)?)?;
     Some((skip, width.checked_sub(diff(b.x1, b.x0)?)?))
 }
+
+/// Advances `iter` by `n` items; `false` if it ended first.
+pub(crate) fn advance<I: Iterator>(iter: &mut I, mut n: u64) -> bool {
+    while n > 0 {
+        // `nth` skips in O(1) on many iterators, e.g. `repeat` and slices.
+        let step = usize::try_from(n).unwrap_or(usize::MAX);
+        if iter.nth(step - 1).is_none() {
+            return false;
+        }
+        n -= step as u64; // `step <= n`, and `usize` has at most 64 bits.
+    }
+    true
+}

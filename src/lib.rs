@@ -124,6 +124,7 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+pub mod band;
 mod clip;
 #[cfg(feature = "embedded-graphics")]
 mod convert;

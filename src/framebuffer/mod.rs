@@ -103,7 +103,7 @@ use embedded_graphics_core::{
 };
 
 use crate::{
-    clip::{clip_to, row_major_skips},
+    clip::{advance, clip_to, row_major_skips},
     line::{fill_run, LinePixels},
     raster::sink::SpanSink,
     span::Span,
@@ -330,19 +330,6 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
             _ => (bytes.chunks_exact_mut(stride.max(1)), xs),
         }
     }
-}
-
-/// Advances `iter` by `n` items; `false` if it ended first.
-fn advance<I: Iterator>(iter: &mut I, mut n: u64) -> bool {
-    while n > 0 {
-        // `nth` skips in O(1) on many iterators, e.g. `repeat` and slices.
-        let step = usize::try_from(n).unwrap_or(usize::MAX);
-        if iter.nth(step - 1).is_none() {
-            return false;
-        }
-        n -= step as u64; // `step <= n`, and `usize` has at most 64 bits.
-    }
-    true
 }
 
 impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget

@@ -139,6 +139,19 @@ impl LinePixels {
         }
     }
 
+    /// The same pixels moved down by `dy` rows, or `None` if a coordinate
+    /// would leave `i32`.
+    pub(crate) fn moved_down(self, dy: i32) -> Option<Self> {
+        let mut moved = self;
+        if self.x_major {
+            moved.first_minor = self.first_minor.checked_add(dy)?;
+        } else {
+            moved.first_major = self.first_major.checked_add(dy)?;
+            moved.last_major = self.last_major.checked_add(dy)?;
+        }
+        Some(moved)
+    }
+
     /// The number of pixels (left to iterate).
     ///
     /// # Examples

@@ -9,8 +9,9 @@
 
 use embedded_graphics_core::{
     draw_target::DrawTarget,
-    geometry::{Point, Size},
+    geometry::{Dimensions, Point, Size},
     primitives::Rectangle,
+    Pixel,
 };
 
 use crate::{
@@ -218,6 +219,41 @@ impl<D: DrawTarget> SpanSink<D::Color> for DrawTargetSink<'_, D> {
     #[inline]
     fn fill_rect(&mut self, area: &Rectangle, color: D::Color) -> Result<(), D::Error> {
         self.target.fill_solid(area, color)
+    }
+}
+
+impl<D: DrawTarget> Dimensions for DrawTargetSink<'_, D> {
+    fn bounding_box(&self) -> Rectangle {
+        self.bounds
+    }
+}
+
+/// The wrapped target itself, for drawing that needs a `DrawTarget`
+/// (shading) beside spans.
+impl<D: DrawTarget> DrawTarget for DrawTargetSink<'_, D> {
+    type Color = D::Color;
+    type Error = D::Error;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), D::Error>
+    where
+        I: IntoIterator<Item = Pixel<D::Color>>,
+    {
+        self.target.draw_iter(pixels)
+    }
+
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), D::Error>
+    where
+        I: IntoIterator<Item = D::Color>,
+    {
+        self.target.fill_contiguous(area, colors)
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, color: D::Color) -> Result<(), D::Error> {
+        self.target.fill_solid(area, color)
+    }
+
+    fn clear(&mut self, color: D::Color) -> Result<(), D::Error> {
+        self.target.clear(color)
     }
 }
 

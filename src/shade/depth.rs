@@ -39,6 +39,8 @@ pub struct DepthBuffer<'a> {
     cells: &'a [Cell<u16>],
     width: u32,
     height: u32,
+    /// The screen row of the first stored row.
+    top: i32,
 }
 
 impl<'a> DepthBuffer<'a> {
@@ -76,6 +78,28 @@ impl<'a> DepthBuffer<'a> {
             cells: &cells[..used],
             width,
             height,
+            top: 0,
+        }
+    }
+
+    /// A depth buffer for the screen rows from `top` down (as many as
+    /// `storage` holds), as a band renderer needs: a pixel `(x, y)` of the
+    /// screen is stored at row `y - top`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::shade::DepthBuffer;
+    ///
+    /// let mut storage = [0u16; 8 * 2];
+    /// let band = DepthBuffer::for_rows(&mut storage, 8, 40); // rows 40 and 41
+    /// band.clear();
+    /// assert_eq!(band.size().height, 2);
+    /// ```
+    pub fn for_rows(storage: &'a mut [u16], width: u32, top: i32) -> Self {
+        Self {
+            top,
+            ..Self::new(storage, width)
         }
     }
 
@@ -100,7 +124,7 @@ impl<'a> DepthBuffer<'a> {
 
     /// The clip rectangle for drawing on `target` with this buffer.
     fn clip(&self, target: &Rectangle) -> Option<Rectangle> {
-        let own = Rectangle::new(Point::zero(), self.size());
+        let own = Rectangle::new(Point::new(0, self.top), self.size());
         let b = Bounds::of(target).intersect(Bounds::of(&own))?;
         // Inside `own`, so every value fits.
         Some(Rectangle::new(
@@ -126,7 +150,9 @@ impl<'a> DepthBuffer<'a> {
     ) -> Result<(), E> {
         // The span lies in the buffer (clipped to it): the index is below
         // `width * height`, the cells' length, so nothing overflows.
-        let start = span.y as usize * self.width as usize + span.x_start as usize;
+        // `span.y - top` is a stored row: in `0..height`.
+        let row = (i64::from(span.y) - i64::from(self.top)) as usize;
+        let start = row * self.width as usize + span.x_start as usize;
         let row = &self.cells[start..start + span.len() as usize];
         let mut i = 0;
         while i < row.len() {

@@ -13,7 +13,9 @@ use embedded_graphics_core::{
     Pixel,
 };
 
-use crate::clip::{clip_to, Bounds};
+use crate::clip::{advance, clip_to, Bounds};
+use crate::raster::sink::SpanSink;
+use crate::span::Span;
 
 /// An in-memory [`DrawTarget`] of any size and colour type that records how
 /// it was drawn on.
@@ -435,16 +437,19 @@ fn area_pixels(area: &Rectangle) -> u64 {
     u64::from(area.size.width) * u64::from(area.size.height)
 }
 
-/// Advances `iter` by `n` items; `false` if it ran out first.
-fn skip<I: Iterator>(iter: &mut I, mut n: u64) -> bool {
-    while n > 0 {
-        let step = usize::try_from(n).unwrap_or(usize::MAX);
-        if iter.nth(step - 1).is_none() {
-            return false;
-        }
-        n -= step as u64;
+
+/// Spans as one `fill_solid` each (counted as such in [`WriteStats`]), so
+/// that band renderers can draw on a display.
+impl<C: PixelColor> SpanSink<C> for SimDisplay<C> {
+    type Error = core::convert::Infallible;
+
+    fn bounds(&self) -> Rectangle {
+        self.bounding_box()
     }
-    true
+
+    fn fill_span(&mut self, span: Span, color: C) -> Result<(), Self::Error> {
+        self.fill_solid(&span.rect(), color)
+    }
 }
 
 impl<C: PixelColor> DrawTarget for SimDisplay<C> {
@@ -490,11 +495,11 @@ impl<C: PixelColor> DrawTarget for SimDisplay<C> {
         let left = (visible.x0 - area_b.x0) as u64;
         let right = (area_b.x1 - visible.x1) as u64;
         let mut colors = colors.into_iter();
-        if !skip(&mut colors, (visible.y0 - area_b.y0) as u64 * width) {
+        if !advance(&mut colors, (visible.y0 - area_b.y0) as u64 * width) {
             return Ok(());
         }
         for y in visible.y0..visible.y1 {
-            if !skip(&mut colors, left) {
+            if !advance(&mut colors, left) {
                 return Ok(());
             }
             // Inside the display: `y * width + x` fits in `usize`.
@@ -505,7 +510,7 @@ impl<C: PixelColor> DrawTarget for SimDisplay<C> {
                 };
                 self.put(row + x as usize, color);
             }
-            if y + 1 < visible.y1 && !skip(&mut colors, right) {
+            if y + 1 < visible.y1 && !advance(&mut colors, right) {
                 return Ok(());
             }
         }

@@ -1,0 +1,259 @@
+//! [`DirtyRows`]: what changed on a full framebuffer since the last flush.
+
+use embedded_graphics_core::{
+    draw_target::DrawTarget,
+    geometry::{Dimensions, OriginDimensions, Point, Size},
+    image::GetPixel,
+    primitives::Rectangle,
+    Pixel,
+};
+
+use crate::{clip::Bounds, line::LinePixels, raster::sink::SpanSink, span::Span};
+
+/// A target `T` of `H` rows that records, per row, the columns written
+/// since the last flush (one range per row, from the leftmost to the
+/// rightmost pixel written), and sends only those to the display.
+///
+/// Every write goes through to `T`; the record costs two compares per
+/// span and `8 H` bytes. [`flush`](Self::flush) sends the changed region
+/// as rectangles, each a run of consecutive changed rows whose column
+/// ranges overlap, with one `fill_contiguous` each (the window write that
+/// display drivers turn into one transfer), and forgets it.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+/// use embedded_raster::{band::DirtyRows, framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Line};
+///
+/// let fb = Framebuffer::<BinaryMsb, 16, 8, { buffer_size::<BinaryMsb>(16, 8) }>::new();
+/// let mut screen = DirtyRows::<_, 8>::new(fb);
+/// Line::new(Point::new(2, 1), Point::new(5, 1)).stroke(BinaryColor::On).draw(&mut screen)?;
+/// assert_eq!(screen.changed().next(), Some(Rectangle::new(Point::new(2, 1), Size::new(4, 1))));
+///
+/// let mut display = MockDisplay::new();
+/// display.set_allow_overdraw(true);
+/// screen.flush(&mut display)?; // sends the 4 changed pixels only
+/// display.assert_pattern(&["      ", "  ####"]);
+/// assert_eq!(screen.changed().next(), None);
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct DirtyRows<T, const H: usize> {
+    target: T,
+    /// Per row, the changed columns `start..end` (empty when `start >= end`).
+    rows: [(u32, u32); H],
+}
+
+impl<T: OriginDimensions, const H: usize> DirtyRows<T, H> {
+    /// Wraps `target`, with nothing changed yet. `H` should be the
+    /// target's height: rows from `H` down are not recorded.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::{band::DirtyRows, framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
+    ///
+    /// let fb = Framebuffer::<Gray8Bytes, 4, 4, { buffer_size::<Gray8Bytes>(4, 4) }>::new();
+    /// let screen = DirtyRows::<_, 4>::new(fb);
+    /// assert_eq!(screen.changed().count(), 0);
+    /// ```
+    pub fn new(target: T) -> Self {
+        Self {
+            target,
+            rows: [(u32::MAX, 0); H],
+        }
+    }
+
+    /// The wrapped target.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::{band::DirtyRows, framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
+    ///
+    /// let fb = Framebuffer::<Gray8Bytes, 4, 4, { buffer_size::<Gray8Bytes>(4, 4) }>::new();
+    /// assert_eq!(DirtyRows::<_, 4>::new(fb).target().as_bytes().len(), 16);
+    /// ```
+    pub fn target(&self) -> &T {
+        &self.target
+    }
+
+    /// Marks the part of `area` on the target as changed.
+    fn mark(&mut self, area: &Rectangle) {
+        let own = Rectangle::new(Point::zero(), self.target.size());
+        let Some(b) = Bounds::of(area).intersect(Bounds::of(&own)) else {
+            return;
+        };
+        // Inside the target, whose sides are `u32`: every value fits.
+        let (x0, x1) = (b.x0 as u32, b.x1 as u32);
+        let rows = b.y0 as usize..(b.y1 as usize).min(H);
+        for (start, end) in self.rows.get_mut(rows).unwrap_or_default() {
+            *start = (*start).min(x0);
+            *end = (*end).max(x1);
+        }
+    }
+
+    /// The changed region as rectangles: runs of consecutive changed rows
+    /// whose column ranges overlap, each the smallest rectangle around its
+    /// run.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+    /// use embedded_raster::{band::DirtyRows, framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
+    ///
+    /// let fb = Framebuffer::<Gray8Bytes, 16, 16, { buffer_size::<Gray8Bytes>(16, 16) }>::new();
+    /// let mut screen = DirtyRows::<_, 16>::new(fb);
+    /// screen.fill_solid(&Rectangle::new(Point::new(1, 1), Size::new(3, 2)), Gray8::WHITE)?;
+    /// screen.fill_solid(&Rectangle::new(Point::new(2, 3), Size::new(5, 1)), Gray8::WHITE)?;
+    /// screen.fill_solid(&Rectangle::new(Point::new(10, 9), Size::new(2, 2)), Gray8::WHITE)?;
+    /// let changed: Vec<_> = screen.changed().collect();
+    /// assert_eq!(changed, [
+    ///     Rectangle::new(Point::new(1, 1), Size::new(6, 3)),
+    ///     Rectangle::new(Point::new(10, 9), Size::new(2, 2)),
+    /// ]);
+    /// # Ok::<(), core::convert::Infallible>(())
+    /// ```
+    pub fn changed(&self) -> impl Iterator<Item = Rectangle> + '_ {
+        let mut y = 0;
+        core::iter::from_fn(move || {
+            // The next changed row, then the rows that overlap it.
+            while y < H && self.rows[y].0 >= self.rows[y].1 {
+                y += 1;
+            }
+            let first = y;
+            let (mut start, mut end) = *self.rows.get(first)?;
+            y += 1;
+            while let Some(&(s, e)) = self.rows.get(y) {
+                if s >= e || s >= end || e <= start {
+                    break;
+                }
+                (start, end) = (start.min(s), end.max(e));
+                y += 1;
+            }
+            // Rows and columns of the target: they fit `i32` and `u32`.
+            let top_left = Point::new(start as i32, first as i32);
+            Some(Rectangle::new(top_left, Size::new(end - start, (y - first) as u32)))
+        })
+    }
+
+    /// Forgets the changes, as after a flush.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_raster::{band::DirtyRows, framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
+    ///
+    /// let fb = Framebuffer::<Gray8Bytes, 4, 4, { buffer_size::<Gray8Bytes>(4, 4) }>::new();
+    /// let mut screen = DirtyRows::<_, 4>::new(fb);
+    /// screen.clear(Gray8::WHITE)?;
+    /// screen.forget();
+    /// assert_eq!(screen.changed().count(), 0);
+    /// # Ok::<(), core::convert::Infallible>(())
+    /// ```
+    pub fn forget(&mut self) {
+        self.rows = [(u32::MAX, 0); H];
+    }
+}
+
+impl<T: OriginDimensions + GetPixel, const H: usize> DirtyRows<T, H> {
+    /// Sends the changed region to `display`, one `fill_contiguous` per
+    /// rectangle of [`changed`](Self::changed), and forgets it.
+    ///
+    /// # Errors
+    ///
+    /// The first error of `display`; the changes are kept then, so a
+    /// later flush sends them again.
+    ///
+    /// # Examples
+    ///
+    /// See [`DirtyRows`].
+    pub fn flush<D>(&mut self, display: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = <T as GetPixel>::Color>,
+    {
+        for area in self.changed() {
+            let target = &self.target;
+            let colors = area.rows().flat_map(move |y| {
+                area.columns()
+                    .filter_map(move |x| target.pixel(Point::new(x, y)))
+            });
+            display.fill_contiguous(&area, colors)?;
+        }
+        self.forget();
+        Ok(())
+    }
+}
+
+impl<T: OriginDimensions, const H: usize> Dimensions for DirtyRows<T, H> {
+    fn bounding_box(&self) -> Rectangle {
+        Rectangle::new(Point::zero(), self.target.size())
+    }
+}
+
+impl<T: DrawTarget + OriginDimensions, const H: usize> DrawTarget for DirtyRows<T, H> {
+    type Color = T::Color;
+    type Error = T::Error;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Pixel<Self::Color>>,
+    {
+        for pixel in pixels {
+            self.mark(&Rectangle::new(pixel.0, Size::new(1, 1)));
+            self.target.draw_iter(core::iter::once(pixel))?;
+        }
+        Ok(())
+    }
+
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Self::Color>,
+    {
+        self.mark(area);
+        self.target.fill_contiguous(area, colors)
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, color: Self::Color) -> Result<(), Self::Error> {
+        self.mark(area);
+        self.target.fill_solid(area, color)
+    }
+
+    fn clear(&mut self, color: Self::Color) -> Result<(), Self::Error> {
+        self.mark(&self.bounding_box());
+        self.target.clear(color)
+    }
+}
+
+impl<C: Copy, T: SpanSink<C> + OriginDimensions, const H: usize> SpanSink<C> for DirtyRows<T, H> {
+    type Error = T::Error;
+
+    fn bounds(&self) -> Rectangle {
+        self.target.bounds()
+    }
+
+    fn fill_span(&mut self, span: Span, color: C) -> Result<(), Self::Error> {
+        self.mark(&span.rect());
+        self.target.fill_span(span, color)
+    }
+
+    fn fill_column(&mut self, top: Point, len: u32, color: C) -> Result<(), Self::Error> {
+        self.mark(&Rectangle::new(top, Size::new(1, len)));
+        self.target.fill_column(top, len, color)
+    }
+
+    fn fill_rect(&mut self, area: &Rectangle, color: C) -> Result<(), Self::Error> {
+        self.mark(area);
+        self.target.fill_rect(area, color)
+    }
+
+    fn fill_line(&mut self, pixels: LinePixels, color: C) -> Result<(), Self::Error> {
+        for p in pixels {
+            self.mark(&Rectangle::new(p, Size::new(1, 1)));
+        }
+        self.target.fill_line(pixels, color)
+    }
+}

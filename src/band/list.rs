@@ -1,0 +1,568 @@
+//! [`DisplayList`]: a frame's drawing commands in fixed storage, drawn
+//! whole or band by band.
+
+use core::{fmt, ops::Range};
+
+use embedded_graphics_core::{
+    draw_target::DrawTarget,
+    geometry::{OriginDimensions, Point, Size},
+    image::GetPixel,
+    pixelcolor::PixelColor,
+    primitives::Rectangle,
+    Drawable,
+};
+
+use super::Band;
+use crate::{
+    clip::Bounds,
+    line::{StyledLine, StyledPolyline},
+    polygon::FilledPolygon,
+    raster::sink::{DrawTargetSink, SpanDrawable, SpanSink},
+    shade::{DepthBuffer, GouraudTriangle, ShadeColor},
+    triangle::{FilledTriangle, FilledTriangleVariant},
+    vertex::Vertex,
+};
+
+/// One drawing command of a [`DisplayList`].
+///
+/// `P` is the vertex capacity of polygons (their edge table, on the stack
+/// while one is drawn).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+/// use embedded_raster::{band::Command, Triangle};
+///
+/// let t = Triangle::from_points(Point::new(0, 0), Point::new(9, 0), Point::new(0, 9))?;
+/// let command: Command<'_, Gray8> = Command::Triangle(t.fill(Gray8::WHITE));
+/// assert_eq!(command.rows(), -1..11); // rows 0..=8 lit, a row more each side
+/// # Ok::<(), embedded_raster::CoordinateOutOfRange>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Command<'a, C, const P: usize = 32> {
+    /// Fill the whole screen.
+    Clear(C),
+    /// Fill a rectangle of pixels, clipped.
+    Rect(Rectangle, C),
+    /// A filled triangle.
+    Triangle(FilledTriangle<C>),
+    /// A filled triangle by a chosen algorithm and precision.
+    TriangleVariant(FilledTriangleVariant<C>),
+    /// A Gouraud-shaded triangle.
+    Gouraud(GouraudTriangle<C>),
+    /// A filled triangle with vertex depths, tested against the list's
+    /// depth buffer.
+    DepthTriangle(FilledTriangle<C>, [u16; 3]),
+    /// A Gouraud triangle with vertex depths, tested likewise.
+    DepthGouraud(GouraudTriangle<C>, [u16; 3]),
+    /// A line, 1 pixel or thick.
+    Line(StyledLine<C>),
+    /// A polyline through borrowed points.
+    Polyline(StyledPolyline<'a, C>),
+    /// A filled polygon of up to `P` borrowed vertices.
+    Polygon(FilledPolygon<'a, C, P>),
+}
+
+/// Whole pixel rows from raw 20.12 `y` values: a row is lit only if its
+/// centre lies between them, so one row more on each side is enough.
+fn vertex_rows(vertices: impl Iterator<Item = Vertex>) -> Range<i32> {
+    let (mut low, mut high) = (i32::MAX, i32::MIN);
+    for v in vertices {
+        let y = v.raw().1 >> 12; // floor(y), in -2^19..2^19
+        low = low.min(y);
+        high = high.max(y);
+    }
+    match low <= high {
+        true => low - 1..high + 2,
+        false => 0..0,
+    }
+}
+
+/// Rows `low..=high` of pixel coordinates grown by `margin` each way.
+fn pixel_rows(low: i32, high: i32, margin: u32) -> Range<i32> {
+    low.saturating_sub_unsigned(margin)..high.saturating_add_unsigned(margin).saturating_add(1)
+}
+
+/// How far a stroke of `width` reaches from its centre line, generously:
+/// half the width, a miter of up to 4 half-widths, and 2 px of rounding.
+fn stroke_margin(width: u32) -> u32 {
+    match width {
+        0 | 1 => 0,
+        w => w.saturating_mul(4).saturating_add(2),
+    }
+}
+
+impl<C: Copy, const P: usize> Command<'_, C, P> {
+    /// The screen rows the command can write, or more: a band that does
+    /// not meet them skips the command before any setup.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+    /// use embedded_raster::band::Command;
+    ///
+    /// let rect = Rectangle::new(Point::new(3, 10), Size::new(5, 4));
+    /// assert_eq!(Command::<'_, Gray8>::Rect(rect, Gray8::WHITE).rows(), 10..14);
+    /// ```
+    pub fn rows(&self) -> Range<i32> {
+        match self {
+            Self::Clear(_) => i32::MIN..i32::MAX,
+            Self::Rect(r, _) => {
+                let b = Bounds::of(r);
+                let clamp = |v: i64| v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
+                match b.x0 < b.x1 {
+                    true => clamp(b.y0)..clamp(b.y1),
+                    false => 0..0,
+                }
+            }
+            Self::Triangle(t) => vertex_rows(t.triangle.vertices.into_iter()),
+            Self::TriangleVariant(t) => vertex_rows(t.triangle.vertices.into_iter()),
+            Self::Gouraud(t) | Self::DepthGouraud(t, _) => {
+                vertex_rows(t.triangle.vertices.into_iter())
+            }
+            Self::DepthTriangle(t, _) => vertex_rows(t.triangle.vertices.into_iter()),
+            Self::Line(l) => {
+                let (a, b) = (l.line.start.y, l.line.end.y);
+                pixel_rows(a.min(b), a.max(b), stroke_margin(l.width))
+            }
+            Self::Polyline(p) => {
+                let ys = p.polyline.points.iter().map(|p| p.y);
+                let (low, high) = (ys.clone().min(), ys.max());
+                match (low, high) {
+                    (Some(low), Some(high)) => pixel_rows(low, high, stroke_margin(p.width)),
+                    _ => 0..0,
+                }
+            }
+            Self::Polygon(p) => vertex_rows(p.polygon.vertices().iter().copied()),
+        }
+    }
+}
+
+/// A [`DisplayList`] had no room for another command: nothing was added,
+/// and everything already in it stays.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+/// use embedded_raster::band::{Command, DisplayList, DisplayListFull};
+///
+/// let mut list = DisplayList::<Gray8, 1>::new();
+/// list.push(Command::Clear(Gray8::BLACK))?;
+/// let full = list.push(Command::Clear(Gray8::WHITE)).unwrap_err();
+/// assert_eq!(full.capacity, 1);
+/// assert_eq!(list.len(), 1);
+/// # Ok::<(), DisplayListFull>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub struct DisplayListFull {
+    /// The list's capacity, all of it in use.
+    pub capacity: usize,
+}
+
+impl fmt::Display for DisplayListFull {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "display list full: all {} commands in use", self.capacity)
+    }
+}
+
+impl core::error::Error for DisplayListFull {}
+
+/// A command with the rows it may write.
+#[derive(Debug, Clone, PartialEq)]
+struct Entry<'a, C, const P: usize> {
+    rows: Range<i32>,
+    command: Command<'a, C, P>,
+}
+
+/// The drawing commands of a frame, up to `N` of them, in fixed storage:
+/// drawn in order on any [`DrawTarget`] (it is a [`Drawable`]), or band
+/// by band ([`render_bands`](Self::render_bands)) so that a frame needs
+/// only a few rows of pixel memory.
+///
+/// `P` is the vertex capacity of its polygons. Commands with depth test
+/// against a depth buffer given when the list is drawn.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+/// use embedded_raster::{
+///     band::{Command, DisplayList},
+///     framebuffer::{buffer_size, Rgb565Be},
+///     Framebuffer, Line, Triangle,
+/// };
+///
+/// let mut list = DisplayList::<Rgb565, 8>::new();
+/// list.push(Command::Clear(Rgb565::BLACK))?;
+/// let t = Triangle::from_points(Point::new(2, 1), Point::new(60, 12), Point::new(20, 30)).unwrap();
+/// list.push(Command::Triangle(t.fill(Rgb565::RED)))?;
+/// list.push(Command::Line(Line::new(Point::new(0, 31), Point::new(63, 0)).stroke(Rgb565::WHITE)))?;
+///
+/// // A 64 x 32 screen in bands of 8 rows: 1 KiB of pixels instead of 4.
+/// let mut band = Framebuffer::<Rgb565Be, 64, 8, { buffer_size::<Rgb565Be>(64, 8) }>::new();
+/// let mut screen = Framebuffer::<Rgb565Be, 64, 32, { buffer_size::<Rgb565Be>(64, 32) }>::new();
+/// list.render_bands(32, &mut band, None, |rows, area| {
+///     // Send the band to the display; here, copy it into a whole frame.
+///     let start = area.top_left.y as usize * 64 * 2;
+///     let bytes = &rows.as_bytes()[..area.size.height as usize * 64 * 2];
+///     screen.as_bytes_mut()[start..start + bytes.len()].copy_from_slice(bytes);
+///     Ok::<(), core::convert::Infallible>(())
+/// })?;
+///
+/// let mut whole = Framebuffer::<Rgb565Be, 64, 32, { buffer_size::<Rgb565Be>(64, 32) }>::new();
+/// list.draw(&mut whole)?;
+/// assert_eq!(screen, whole);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct DisplayList<'a, C, const N: usize, const P: usize = 32> {
+    entries: heapless::Vec<Entry<'a, C, P>, N>,
+}
+
+impl<C, const N: usize, const P: usize> Default for DisplayList<'_, C, N, P> {
+    fn default() -> Self {
+        Self {
+            entries: heapless::Vec::new(),
+        }
+    }
+}
+
+impl<'a, C: PixelColor, const N: usize, const P: usize> DisplayList<'a, C, N, P> {
+    /// An empty list.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use embedded_raster::band::DisplayList;
+    ///
+    /// let list = DisplayList::<BinaryColor, 16>::new();
+    /// assert!(list.is_empty());
+    /// ```
+    pub const fn new() -> Self {
+        Self {
+            entries: heapless::Vec::new(),
+        }
+    }
+
+    /// Appends `command`, to be drawn after those already in the list.
+    ///
+    /// # Errors
+    ///
+    /// [`DisplayListFull`] if the list holds `N` commands already: nothing
+    /// is added or lost.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use embedded_raster::band::{Command, DisplayList};
+    ///
+    /// let mut list = DisplayList::<BinaryColor, 2>::new();
+    /// list.push(Command::Clear(BinaryColor::Off))?;
+    /// assert_eq!(list.len(), 1);
+    /// # Ok::<(), embedded_raster::band::DisplayListFull>(())
+    /// ```
+    pub fn push(&mut self, command: Command<'a, C, P>) -> Result<(), DisplayListFull> {
+        let rows = command.rows();
+        self.entries
+            .push(Entry { rows, command })
+            .map_err(|_| DisplayListFull { capacity: N })
+    }
+
+    /// The number of commands in the list.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use embedded_raster::{band::{Command, DisplayList}, FillRule, Polygon, Vertex};
+    ///
+    /// let v = [(0, 0), (8, 0), (4, 8)].map(|(x, y)| Vertex::try_from_num(x, y).unwrap());
+    /// let mut list = DisplayList::<BinaryColor, 4, 8>::new();
+    /// let polygon = Polygon::<8>::new(&v)?.fill(BinaryColor::On).with_rule(FillRule::EvenOdd);
+    /// list.push(Command::Polygon(polygon))?;
+    /// assert_eq!(list.len(), 1);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// Whether the list has no command.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use embedded_raster::band::DisplayList;
+    ///
+    /// assert!(DisplayList::<BinaryColor, 1>::new().is_empty());
+    /// ```
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+
+    /// Removes every command.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use embedded_raster::band::{Command, DisplayList};
+    ///
+    /// let mut list = DisplayList::<BinaryColor, 1>::new();
+    /// list.push(Command::Clear(BinaryColor::On))?;
+    /// list.clear();
+    /// assert!(list.is_empty());
+    /// # Ok::<(), embedded_raster::band::DisplayListFull>(())
+    /// ```
+    pub fn clear(&mut self) {
+        self.entries.clear();
+    }
+
+    /// The commands, in drawing order.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use embedded_raster::band::{Command, DisplayList};
+    ///
+    /// let mut list = DisplayList::<BinaryColor, 1>::new();
+    /// list.push(Command::Clear(BinaryColor::On))?;
+    /// assert_eq!(list.commands().next(), Some(&Command::Clear(BinaryColor::On)));
+    /// # Ok::<(), embedded_raster::band::DisplayListFull>(())
+    /// ```
+    pub fn commands(&self) -> impl Iterator<Item = &Command<'a, C, P>> {
+        self.entries.iter().map(|e| &e.command)
+    }
+}
+
+impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
+    /// Draws the commands that can touch rows `rows` on `target`, in order,
+    /// with `depth` for the depth-tested ones (without one, they are
+    /// skipped).
+    fn draw_rows<T>(
+        &self,
+        target: &mut T,
+        rows: Range<i32>,
+        depth: Option<DepthBuffer<'_>>,
+    ) -> Result<(), <T as DrawTarget>::Error>
+    where
+        T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error>,
+    {
+        for entry in &self.entries {
+            if entry.rows.start >= rows.end || rows.start >= entry.rows.end {
+                continue;
+            }
+            match &entry.command {
+                Command::Clear(color) => DrawTarget::clear(target, *color)?,
+                Command::Rect(area, color) => {
+                    if let Some(visible) = clip(area, &SpanSink::bounds(target)) {
+                        target.fill_rect(&visible, *color)?;
+                    }
+                }
+                Command::Triangle(t) => t.draw_spans(target)?,
+                Command::TriangleVariant(t) => t.draw_spans(target)?,
+                Command::Gouraud(t) => t.draw(target)?,
+                Command::DepthTriangle(t, z) => match depth {
+                    Some(depth) => t.with_depth(*z, depth).draw(target)?,
+                    None => {}
+                },
+                Command::DepthGouraud(t, z) => match depth {
+                    Some(depth) => t.with_depth(*z, depth).draw(target)?,
+                    None => {}
+                },
+                Command::Line(l) => l.draw_spans(target)?,
+                Command::Polyline(p) => p.draw_spans(target)?,
+                Command::Polygon(p) => p.draw_spans(target)?,
+            }
+        }
+        Ok(())
+    }
+
+    /// Draws the list on `target`, a [`DrawTarget`] that is also a
+    /// [`SpanSink`] (a [`Framebuffer`](crate::Framebuffer), a [`Band`] of
+    /// one), with `depth` for the depth-tested commands (skipped without
+    /// one). [`Drawable::draw`] draws on any `DrawTarget`, without depth.
+    ///
+    /// # Errors
+    ///
+    /// The first error of `target`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_raster::{
+    ///     band::{Command, DisplayList},
+    ///     framebuffer::{buffer_size, Gray8Bytes},
+    ///     shade::DepthBuffer,
+    ///     Framebuffer, Triangle,
+    /// };
+    ///
+    /// let near = Triangle::from_points(Point::new(0, 0), Point::new(15, 0), Point::new(0, 15))?;
+    /// let mut list = DisplayList::<Gray8, 4>::new();
+    /// list.push(Command::DepthTriangle(near.fill(Gray8::WHITE), [10, 10, 10]))?;
+    /// list.push(Command::DepthTriangle(near.fill(Gray8::new(7)), [20, 20, 20]))?; // behind
+    ///
+    /// let mut fb = Framebuffer::<Gray8Bytes, 16, 16, { buffer_size::<Gray8Bytes>(16, 16) }>::new();
+    /// let mut z = [0u16; 16 * 16];
+    /// let depth = DepthBuffer::new(&mut z, 16);
+    /// depth.clear();
+    /// list.draw_with_depth(&mut fb, Some(depth))?;
+    /// assert_eq!(fb.pixel(Point::new(1, 1)), Some(Gray8::WHITE));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn draw_with_depth<T>(
+        &self,
+        target: &mut T,
+        depth: Option<DepthBuffer<'_>>,
+    ) -> Result<(), <T as DrawTarget>::Error>
+    where
+        T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error>,
+    {
+        self.draw_rows(target, i32::MIN..i32::MAX, depth)
+    }
+
+    /// Renders the list on a screen of `height` rows, band by band, into
+    /// `buffer` (as wide as the screen; as many rows as it has make a
+    /// band), and hands each finished band to `flush` with the screen area
+    /// it covers (the last band may cover fewer rows than the buffer has).
+    ///
+    /// Each band is cleared to nothing: the buffer keeps what the previous
+    /// band left in rows no command writes, so a frame should start with
+    /// [`Command::Clear`] (or cover every pixel). A command is set up only
+    /// in the bands its rows meet. With `depth` (storage for the buffer's
+    /// pixels, row-major) the depth-tested commands are tested against a
+    /// depth band cleared to [`FAR`](crate::shade::FAR) before each band.
+    ///
+    /// The image is exactly the one drawn on a whole-screen target, byte
+    /// for byte, whatever the band height.
+    ///
+    /// # Errors
+    ///
+    /// The first error of `flush` or of the buffer, as [`RenderError`].
+    ///
+    /// # Examples
+    ///
+    /// See [`DisplayList`].
+    pub fn render_bands<T, E>(
+        &self,
+        height: u32,
+        buffer: &mut T,
+        mut depth: Option<&mut [u16]>,
+        mut flush: impl FnMut(&T, Rectangle) -> Result<(), E>,
+    ) -> Result<(), RenderError<<T as DrawTarget>::Error, E>>
+    where
+        T: DrawTarget<Color = C>
+            + SpanSink<C, Error = <T as DrawTarget>::Error>
+            + OriginDimensions
+            + GetPixel<Color = C>,
+    {
+        let Size { width, height: rows } = buffer.size();
+        if rows == 0 {
+            return Ok(());
+        }
+        let screen = i32::try_from(height).unwrap_or(i32::MAX);
+        let mut top = 0i32;
+        while top < screen {
+            let mut band = Band::new(buffer, top);
+            let band_rows = band.rows();
+            let depth_band = depth.as_deref_mut().map(|storage| {
+                let d = DepthBuffer::for_rows(storage, width, top);
+                d.clear();
+                d
+            });
+            self.draw_rows(&mut band, band_rows.clone(), depth_band)
+                .map_err(RenderError::Draw)?;
+            let end = band_rows.end.min(screen);
+            // `top < end <= screen`: the difference is a positive `u32`.
+            let area = Rectangle::new(
+                Point::new(0, top),
+                Size::new(width, end.abs_diff(top)),
+            );
+            flush(buffer, area).map_err(RenderError::Flush)?;
+            top = end;
+        }
+        Ok(())
+    }
+}
+
+/// Why [`DisplayList::render_bands`] stopped.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::band::RenderError;
+///
+/// let e: RenderError<core::convert::Infallible, &str> = RenderError::Flush("bus error");
+/// assert!(matches!(e, RenderError::Flush("bus error")));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum RenderError<D, F> {
+    /// Drawing into the band buffer failed.
+    Draw(D),
+    /// Handing a finished band on failed.
+    Flush(F),
+}
+
+impl<D: fmt::Display, F: fmt::Display> fmt::Display for RenderError<D, F> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Draw(e) => write!(f, "drawing a band failed: {e}"),
+            Self::Flush(e) => write!(f, "sending a band failed: {e}"),
+        }
+    }
+}
+
+impl<D: fmt::Debug + fmt::Display, F: fmt::Debug + fmt::Display> core::error::Error
+    for RenderError<D, F>
+{
+}
+
+/// The part of `area` inside `bounds`, or `None`.
+fn clip(area: &Rectangle, bounds: &Rectangle) -> Option<Rectangle> {
+    let b = Bounds::of(area).intersect(Bounds::of(bounds))?;
+    Some(Rectangle::new(
+        Point::new(i32::try_from(b.x0).ok()?, i32::try_from(b.y0).ok()?),
+        Size::new(
+            u32::try_from(b.x1 - b.x0).ok()?,
+            u32::try_from(b.y1 - b.y0).ok()?,
+        ),
+    ))
+}
+
+/// Draws the list in order on any `DrawTarget`, without depth (the
+/// depth-tested commands are skipped: use
+/// [`draw_with_depth`](DisplayList::draw_with_depth)).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+/// use embedded_raster::{band::{Command, DisplayList}, Line};
+///
+/// let mut list = DisplayList::<BinaryColor, 2>::new();
+/// list.push(Command::Line(Line::new(Point::new(0, 0), Point::new(2, 0)).stroke(BinaryColor::On)))?;
+/// let mut display = MockDisplay::new();
+/// list.draw(&mut display)?;
+/// display.assert_pattern(&["###"]);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+impl<C: ShadeColor, const N: usize, const P: usize> Drawable for DisplayList<'_, C, N, P> {
+    type Color = C;
+    type Output = ();
+
+    fn draw<D: DrawTarget<Color = C>>(&self, target: &mut D) -> Result<(), D::Error> {
+        self.draw_with_depth(&mut DrawTargetSink::new(target), None)
+    }
+}
