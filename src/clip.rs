@@ -26,6 +26,21 @@ impl Bounds {
         }
     }
 
+    /// The rectangle of these bounds, which must lie in `i32` coordinates
+    /// with `u32` sides (they do when inside a `Rectangle`); anything
+    /// else saturates.
+    pub fn to_rectangle(self) -> Rectangle {
+        let at = |v: i64| v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
+        let side = |a: i64, b: i64| b.saturating_sub(a).clamp(0, i64::from(u32::MAX)) as u32;
+        Rectangle::new(
+            embedded_graphics_core::geometry::Point::new(at(self.x0), at(self.y0)),
+            embedded_graphics_core::geometry::Size::new(
+                side(self.x0, self.x1),
+                side(self.y0, self.y1),
+            ),
+        )
+    }
+
     /// The pixels in both `self` and `other`, or `None` if there are none.
     pub fn intersect(self, other: Self) -> Option<Self> {
         let b = Self {

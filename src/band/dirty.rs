@@ -135,7 +135,10 @@ impl<T: OriginDimensions, const H: usize> DirtyRows<T, H> {
             }
             // Rows and columns of the target: they fit `i32` and `u32`.
             let top_left = Point::new(start as i32, first as i32);
-            Some(Rectangle::new(top_left, Size::new(end - start, (y - first) as u32)))
+            Some(Rectangle::new(
+                top_left,
+                Size::new(end - start, (y - first) as u32),
+            ))
         })
     }
 

@@ -4,15 +4,11 @@
 use core::{fmt, ops::Range};
 
 use embedded_graphics_core::{
-    draw_target::DrawTarget,
-    geometry::{OriginDimensions, Point, Size},
-    image::GetPixel,
-    pixelcolor::PixelColor,
-    primitives::Rectangle,
-    Drawable,
+    draw_target::DrawTarget, geometry::OriginDimensions, pixelcolor::PixelColor,
+    primitives::Rectangle, Drawable,
 };
 
-use super::Band;
+use super::{render_in_bands, Band, BandOutput, RenderError};
 use crate::{
     clip::Bounds,
     line::{StyledLine, StyledPolyline},
@@ -167,7 +163,11 @@ pub struct DisplayListFull {
 
 impl fmt::Display for DisplayListFull {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "display list full: all {} commands in use", self.capacity)
+        write!(
+            f,
+            "display list full: all {} commands in use",
+            self.capacity
+        )
     }
 }
 
@@ -205,9 +205,9 @@ struct Entry<'a, C, const P: usize> {
 /// list.push(Command::Line(Line::new(Point::new(0, 31), Point::new(63, 0)).stroke(Rgb565::WHITE)))?;
 ///
 /// // A 64 x 32 screen in bands of 8 rows: 1 KiB of pixels instead of 4.
-/// let mut band = Framebuffer::<Rgb565Be, 64, 8, { buffer_size::<Rgb565Be>(64, 8) }>::new();
+/// let mut band = [Framebuffer::<Rgb565Be, 64, 8, { buffer_size::<Rgb565Be>(64, 8) }>::new()];
 /// let mut screen = Framebuffer::<Rgb565Be, 64, 32, { buffer_size::<Rgb565Be>(64, 32) }>::new();
-/// list.render_bands(32, &mut band, None, |rows, area| {
+/// list.render_bands(32, &mut band, None, &mut |rows: &Framebuffer<_, 64, 8, _>, area: Rectangle| {
 ///     // Send the band to the display; here, copy it into a whole frame.
 ///     let start = area.top_left.y as usize * 64 * 2;
 ///     let bytes = &rows.as_bytes()[..area.size.height as usize * 64 * 2];
@@ -432,113 +432,83 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
         self.draw_rows(target, i32::MIN..i32::MAX, depth)
     }
 
-    /// Renders the list on a screen of `height` rows, band by band, into
-    /// `buffer` (as wide as the screen; as many rows as it has make a
-    /// band), and hands each finished band to `flush` with the screen area
-    /// it covers (the last band may cover fewer rows than the buffer has).
-    ///
-    /// Each band is cleared to nothing: the buffer keeps what the previous
-    /// band left in rows no command writes, so a frame should start with
-    /// [`Command::Clear`] (or cover every pixel). A command is set up only
-    /// in the bands its rows meet. With `depth` (storage for the buffer's
-    /// pixels, row-major) the depth-tested commands are tested against a
-    /// depth band cleared to [`FAR`](crate::shade::FAR) before each band.
-    ///
-    /// The image is exactly the one drawn on a whole-screen target, byte
-    /// for byte, whatever the band height.
+    /// Draws the commands whose rows meet `band`'s on it, in order, with
+    /// `depth` (for the band's rows) for the depth-tested ones.
     ///
     /// # Errors
     ///
-    /// The first error of `flush` or of the buffer, as [`RenderError`].
+    /// The first error of the band's buffer.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_raster::{band::{Band, Command, DisplayList}, framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, Line};
+    ///
+    /// let mut list = DisplayList::<Gray8, 2>::new();
+    /// list.push(Command::Line(Line::new(Point::new(0, 9), Point::new(7, 9)).stroke(Gray8::WHITE)))?;
+    /// let mut rows = Framebuffer::<Gray8Bytes, 8, 4, { buffer_size::<Gray8Bytes>(8, 4) }>::new();
+    /// list.draw_band(&mut Band::new(&mut rows, 8), None)?; // rows 8..12
+    /// assert_eq!(rows.pixel(Point::new(3, 1)), Some(Gray8::WHITE));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn draw_band<T>(
+        &self,
+        band: &mut Band<'_, T>,
+        depth: Option<DepthBuffer<'_>>,
+    ) -> Result<(), <T as DrawTarget>::Error>
+    where
+        T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error> + OriginDimensions,
+    {
+        let rows = band.rows();
+        self.draw_rows(band, rows, depth)
+    }
+
+    /// Renders the list on a screen of `height` rows, band by band: each
+    /// band is drawn into the next of `buffers` (as wide as the screen; as
+    /// many rows as a buffer has make a band; one buffer, or two to
+    /// alternate so that one can be sent while the other is drawn) and
+    /// handed to `output` ([`render_in_bands`] has the details).
+    ///
+    /// The image is exactly the one drawn on a whole-screen target, byte
+    /// for byte, whatever the band height. A command is set up only in the
+    /// bands its rows meet.
+    ///
+    /// # Errors
+    ///
+    /// The first error of a buffer or of `output`, as [`RenderError`].
     ///
     /// # Examples
     ///
     /// See [`DisplayList`].
-    pub fn render_bands<T, E>(
+    pub fn render_bands<T, O>(
         &self,
         height: u32,
-        buffer: &mut T,
-        mut depth: Option<&mut [u16]>,
-        mut flush: impl FnMut(&T, Rectangle) -> Result<(), E>,
-    ) -> Result<(), RenderError<<T as DrawTarget>::Error, E>>
+        buffers: &mut [T],
+        depth: Option<&mut [u16]>,
+        output: &mut O,
+    ) -> Result<(), RenderError<<T as DrawTarget>::Error, O::Error>>
     where
-        T: DrawTarget<Color = C>
-            + SpanSink<C, Error = <T as DrawTarget>::Error>
-            + OriginDimensions
-            + GetPixel<Color = C>,
+        T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error> + OriginDimensions,
+        O: BandOutput<T>,
     {
-        let Size { width, height: rows } = buffer.size();
-        if rows == 0 {
-            return Ok(());
-        }
-        let screen = i32::try_from(height).unwrap_or(i32::MAX);
-        let mut top = 0i32;
-        while top < screen {
-            let mut band = Band::new(buffer, top);
-            let band_rows = band.rows();
-            let depth_band = depth.as_deref_mut().map(|storage| {
-                let d = DepthBuffer::for_rows(storage, width, top);
-                d.clear();
-                d
-            });
-            self.draw_rows(&mut band, band_rows.clone(), depth_band)
-                .map_err(RenderError::Draw)?;
-            let end = band_rows.end.min(screen);
-            // `top < end <= screen`: the difference is a positive `u32`.
-            let area = Rectangle::new(
-                Point::new(0, top),
-                Size::new(width, end.abs_diff(top)),
-            );
-            flush(buffer, area).map_err(RenderError::Flush)?;
-            top = end;
-        }
-        Ok(())
+        render_in_bands(
+            height,
+            buffers,
+            depth,
+            |band, depth| self.draw_band(band, depth),
+            output,
+        )
     }
-}
-
-/// Why [`DisplayList::render_bands`] stopped.
-///
-/// # Examples
-///
-/// ```
-/// use embedded_raster::band::RenderError;
-///
-/// let e: RenderError<core::convert::Infallible, &str> = RenderError::Flush("bus error");
-/// assert!(matches!(e, RenderError::Flush("bus error")));
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum RenderError<D, F> {
-    /// Drawing into the band buffer failed.
-    Draw(D),
-    /// Handing a finished band on failed.
-    Flush(F),
-}
-
-impl<D: fmt::Display, F: fmt::Display> fmt::Display for RenderError<D, F> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::Draw(e) => write!(f, "drawing a band failed: {e}"),
-            Self::Flush(e) => write!(f, "sending a band failed: {e}"),
-        }
-    }
-}
-
-impl<D: fmt::Debug + fmt::Display, F: fmt::Debug + fmt::Display> core::error::Error
-    for RenderError<D, F>
-{
 }
 
 /// The part of `area` inside `bounds`, or `None`.
 fn clip(area: &Rectangle, bounds: &Rectangle) -> Option<Rectangle> {
-    let b = Bounds::of(area).intersect(Bounds::of(bounds))?;
-    Some(Rectangle::new(
-        Point::new(i32::try_from(b.x0).ok()?, i32::try_from(b.y0).ok()?),
-        Size::new(
-            u32::try_from(b.x1 - b.x0).ok()?,
-            u32::try_from(b.y1 - b.y0).ok()?,
-        ),
-    ))
+    Some(
+        Bounds::of(area)
+            .intersect(Bounds::of(bounds))?
+            .to_rectangle(),
+    )
 }
 
 /// Draws the list in order on any `DrawTarget`, without depth (the

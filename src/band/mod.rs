@@ -20,13 +20,14 @@ mod dirty;
 mod list;
 
 pub use dirty::DirtyRows;
-pub use list::{Command, DisplayList, DisplayListFull, RenderError};
+pub use list::{Command, DisplayList, DisplayListFull};
 
-use core::ops::Range;
+use core::{fmt, ops::Range};
 
 use embedded_graphics_core::{
     draw_target::DrawTarget,
     geometry::{Dimensions, OriginDimensions, Point, Size},
+    image::GetPixel,
     primitives::Rectangle,
     Pixel,
 };
@@ -35,6 +36,7 @@ use crate::{
     clip::{advance, Bounds},
     line::LinePixels,
     raster::sink::SpanSink,
+    shade::DepthBuffer,
     span::Span,
 };
 
@@ -64,6 +66,8 @@ use crate::{
 pub struct Band<'a, T> {
     target: &'a mut T,
     top: i32,
+    /// At most the target's height.
+    height: u32,
 }
 
 impl<'a, T: OriginDimensions> Band<'a, T> {
@@ -81,7 +85,31 @@ impl<'a, T: OriginDimensions> Band<'a, T> {
     /// assert_eq!(band.rows(), 16..24);
     /// ```
     pub fn new(target: &'a mut T, top: i32) -> Self {
-        Self { target, top }
+        let height = target.size().height;
+        Self {
+            target,
+            top,
+            height,
+        }
+    }
+
+    /// The same band, covering at most `rows` rows (the last band of a
+    /// screen whose height the buffer's does not divide): shapes are
+    /// clipped to them, and the target's rows below stay untouched.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::{band::Band, framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
+    ///
+    /// let mut rows = Framebuffer::<Gray8Bytes, 4, 16, { buffer_size::<Gray8Bytes>(4, 16) }>::new();
+    /// assert_eq!(Band::new(&mut rows, 32).limited_to(8).rows(), 32..40);
+    /// ```
+    pub fn limited_to(self, rows: u32) -> Self {
+        Self {
+            height: self.height.min(rows),
+            ..self
+        }
     }
 
     /// The screen rows this band covers (ends at `i32::MAX` at most).
@@ -95,8 +123,7 @@ impl<'a, T: OriginDimensions> Band<'a, T> {
     /// assert_eq!(Band::new(&mut rows, -1).rows(), -1..1);
     /// ```
     pub fn rows(&self) -> Range<i32> {
-        let height = self.target.size().height;
-        self.top..self.top.saturating_add_unsigned(height)
+        self.top..self.top.saturating_add_unsigned(self.height)
     }
 
     /// The screen area this band covers.
@@ -193,10 +220,20 @@ impl<C: Copy, T: SpanSink<C> + OriginDimensions> SpanSink<C> for Band<'_, T> {
     type Error = T::Error;
 
     fn bounds(&self) -> Rectangle {
-        // Only what the target has: shapes clip to it before they step.
-        let own = self.target.bounds();
-        let top_left = Point::new(own.top_left.x, own.top_left.y.saturating_add(self.top));
-        Rectangle::new(top_left, own.size)
+        // What the target has, in the band's rows: shapes clip to it
+        // before they step.
+        let own = Bounds::of(&self.target.bounds());
+        let rows = Bounds::of(&self.area());
+        let top = i64::from(self.top);
+        let moved = Bounds {
+            y0: own.y0 + top,
+            y1: own.y1 + top,
+            ..own
+        };
+        match moved.intersect(rows) {
+            Some(b) => b.to_rectangle(),
+            None => Rectangle::new(Point::new(0, self.top), Size::zero()),
+        }
     }
 
     fn fill_span(&mut self, span: Span, color: C) -> Result<(), Self::Error> {
@@ -209,10 +246,9 @@ impl<C: Copy, T: SpanSink<C> + OriginDimensions> SpanSink<C> for Band<'_, T> {
     fn fill_column(&mut self, top: Point, len: u32, color: C) -> Result<(), Self::Error> {
         let column = Rectangle::new(top, Size::new(1, len));
         match self.to_target(&column) {
-            Some((moved, _)) => {
-                self.target
-                    .fill_column(moved.top_left, moved.size.height, color)
-            }
+            Some((moved, _)) => self
+                .target
+                .fill_column(moved.top_left, moved.size.height, color),
             None => Ok(()),
         }
     }
@@ -232,4 +268,217 @@ impl<C: Copy, T: SpanSink<C> + OriginDimensions> SpanSink<C> for Band<'_, T> {
             None => pixels.for_each_run(|run| crate::line::fill_run(self, run, color)),
         }
     }
+}
+
+/// Where finished bands go: a display's window write, a DMA transfer, a
+/// copy. Any `FnMut(&T, Rectangle) -> Result<(), E>` closure is one.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::primitives::Rectangle;
+/// use embedded_raster::band::BandOutput;
+///
+/// /// Counts the rows it is sent.
+/// struct Rows(u32);
+/// impl<T> BandOutput<T> for Rows {
+///     type Error = core::convert::Infallible;
+///     fn send(&mut self, _band: &T, area: Rectangle) -> Result<(), Self::Error> {
+///         self.0 += area.size.height;
+///         Ok(())
+///     }
+/// }
+/// ```
+pub trait BandOutput<T> {
+    /// What sending can fail with.
+    type Error;
+
+    /// Takes the finished `band`, whose first `area.size.height` rows are
+    /// the screen's `area`. It may start a transfer from `band` and return
+    /// before it ends: the renderer draws into that buffer again only
+    /// after [`wait`](Self::wait) for it.
+    fn send(&mut self, band: &T, area: Rectangle) -> Result<(), Self::Error>;
+
+    /// Returns once nothing is being read from `band` any more. The
+    /// provided implementation returns at once (for a `send` that is done
+    /// when it returns).
+    fn wait(&mut self, band: &T) -> Result<(), Self::Error> {
+        let _ = band;
+        Ok(())
+    }
+}
+
+impl<T, E, F: FnMut(&T, Rectangle) -> Result<(), E>> BandOutput<T> for F {
+    type Error = E;
+
+    fn send(&mut self, band: &T, area: Rectangle) -> Result<(), E> {
+        self(band, area)
+    }
+}
+
+/// A [`BandOutput`] that writes each band to a [`DrawTarget`] (a display
+/// driver) with one `fill_contiguous` over the band's screen area: the
+/// window write that drivers such as `mipidsi` turn into one transfer.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+/// use embedded_raster::{band::{Command, DisplayList, WriteTo}, framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Line};
+///
+/// let mut list = DisplayList::<BinaryColor, 2>::new();
+/// list.push(Command::Clear(BinaryColor::Off))?;
+/// list.push(Command::Line(Line::new(Point::new(0, 0), Point::new(3, 3)).stroke(BinaryColor::On)))?;
+/// let mut display = MockDisplay::new();
+/// let mut bands = [Framebuffer::<BinaryMsb, 4, 2, { buffer_size::<BinaryMsb>(4, 2) }>::new()];
+/// list.render_bands(4, &mut bands, None, &mut WriteTo(&mut display))?;
+/// display.assert_pattern(&["#...", ".#..", "..#.", "...#"]);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug)]
+pub struct WriteTo<'a, D>(pub &'a mut D);
+
+impl<T, D> BandOutput<T> for WriteTo<'_, D>
+where
+    T: GetPixel<Color = D::Color>,
+    D: DrawTarget,
+{
+    type Error = D::Error;
+
+    fn send(&mut self, band: &T, area: Rectangle) -> Result<(), D::Error> {
+        let (width, height) = (area.size.width, area.size.height);
+        // Band rows and columns: small enough for `i32`.
+        let colors = (0..height).flat_map(move |y| {
+            (0..width).filter_map(move |x| band.pixel(Point::new(x as i32, y as i32)))
+        });
+        self.0.fill_contiguous(&area, colors)
+    }
+}
+
+/// Renders a screen of `height` rows band by band: for each band, in
+/// order from the top, the next of `buffers` (used in turn; each as wide
+/// as the screen, its rows making the band) stands for the band's rows,
+/// `draw` draws the frame on it, and `output` is sent the finished band.
+///
+/// - The last band covers only the rows left; buffer rows below the screen
+///   are not drawn.
+/// - Buffers are not cleared between bands: the frame's drawing should
+///   cover every pixel (start with a clear).
+/// - With `depth` (storage for one buffer's pixels, row-major), `draw`
+///   gets a depth buffer for the band's rows, cleared to
+///   [`FAR`](crate::shade::FAR) before each band.
+/// - Before a buffer is drawn into again, `output.wait` is called for it;
+///   at the end, for every buffer sent.
+///
+/// # Errors
+///
+/// The first error of `draw` ([`RenderError::Draw`]) or of `output`
+/// ([`RenderError::Flush`]); no band is sent after it.
+///
+/// # Examples
+///
+/// Text of embedded-graphics in bands of 4 rows:
+///
+/// ```
+/// use embedded_graphics::{mono_font::{ascii::FONT_6X10, MonoTextStyle}, pixelcolor::BinaryColor, prelude::*, text::Text};
+/// use embedded_raster::{band::render_in_bands, framebuffer::{buffer_size, BinaryMsb}, Framebuffer};
+///
+/// let mut buffers = [Framebuffer::<BinaryMsb, 64, 4, { buffer_size::<BinaryMsb>(64, 4) }>::new()];
+/// let mut lit = 0;
+/// render_in_bands(16, &mut buffers, None, |band, _depth| {
+///     band.clear(BinaryColor::Off)?;
+///     Text::new("band", Point::new(2, 10), MonoTextStyle::new(&FONT_6X10, BinaryColor::On)).draw(band)?;
+///     Ok::<(), core::convert::Infallible>(())
+/// }, &mut |rows: &Framebuffer<BinaryMsb, 64, 4, _>, area: embedded_graphics::primitives::Rectangle| {
+///     lit += rows.as_bytes()[..area.size.height as usize * 8].iter().map(|b| b.count_ones()).sum::<u32>();
+///     Ok::<(), core::convert::Infallible>(())
+/// })?;
+/// assert!(lit > 20);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn render_in_bands<T, D, O>(
+    height: u32,
+    buffers: &mut [T],
+    mut depth: Option<&mut [u16]>,
+    mut draw: impl FnMut(&mut Band<'_, T>, Option<DepthBuffer<'_>>) -> Result<(), D>,
+    output: &mut O,
+) -> Result<(), RenderError<D, O::Error>>
+where
+    T: OriginDimensions,
+    O: BandOutput<T>,
+{
+    let count = buffers.len();
+    let mut sent = 0usize; // buffers sent at least once: a prefix
+    let screen = i32::try_from(height).unwrap_or(i32::MAX);
+    let mut top = 0i32;
+    let mut next = 0usize;
+    while top < screen {
+        let Some(buffer) = buffers.get_mut(next) else {
+            return Ok(()); // no buffer at all
+        };
+        let Size {
+            width,
+            height: rows,
+        } = buffer.size();
+        if rows == 0 {
+            return Ok(());
+        }
+        if next < sent {
+            output.wait(buffer).map_err(RenderError::Flush)?;
+        }
+        let left = screen.abs_diff(top); // `top < screen`
+        let mut band = Band::new(buffer, top).limited_to(left);
+        let band_rows = band.rows();
+        let depth_band = depth.as_deref_mut().map(|storage| {
+            let d = DepthBuffer::for_rows(storage, width, top);
+            d.clear();
+            d
+        });
+        draw(&mut band, depth_band).map_err(RenderError::Draw)?;
+        let area = Rectangle::new(
+            Point::new(0, top),
+            Size::new(width, band_rows.end.abs_diff(band_rows.start)),
+        );
+        output.send(buffer, area).map_err(RenderError::Flush)?;
+        sent = sent.max(next + 1);
+        top = band_rows.end;
+        next = (next + 1) % count;
+    }
+    for buffer in &buffers[..sent] {
+        output.wait(buffer).map_err(RenderError::Flush)?;
+    }
+    Ok(())
+}
+
+/// Why [`DisplayList::render_bands`] stopped.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::band::RenderError;
+///
+/// let e: RenderError<core::convert::Infallible, &str> = RenderError::Flush("bus error");
+/// assert!(matches!(e, RenderError::Flush("bus error")));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum RenderError<D, F> {
+    /// Drawing into the band buffer failed.
+    Draw(D),
+    /// Handing a finished band on failed.
+    Flush(F),
+}
+
+impl<D: fmt::Display, F: fmt::Display> fmt::Display for RenderError<D, F> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Draw(e) => write!(f, "drawing a band failed: {e}"),
+            Self::Flush(e) => write!(f, "sending a band failed: {e}"),
+        }
+    }
+}
+
+impl<D: fmt::Debug + fmt::Display, F: fmt::Debug + fmt::Display> core::error::Error
+    for RenderError<D, F>
+{
 }

@@ -437,7 +437,6 @@ fn area_pixels(area: &Rectangle) -> u64 {
     u64::from(area.size.width) * u64::from(area.size.height)
 }
 
-
 /// Spans as one `fill_solid` each (counted as such in [`WriteStats`]), so
 /// that band renderers can draw on a display.
 impl<C: PixelColor> SpanSink<C> for SimDisplay<C> {
