@@ -210,9 +210,12 @@ impl<T: DrawTarget + OriginDimensions> DrawTarget for Band<'_, T> {
         }
     }
 
-    /// Fills the whole band: its part of the screen.
+    /// Fills the whole band: its part of the screen (and no buffer row
+    /// below a limited band).
     fn clear(&mut self, color: Self::Color) -> Result<(), Self::Error> {
-        self.target.clear(color)
+        let width = self.target.size().width;
+        let rows = Rectangle::new(Point::zero(), Size::new(width, self.height));
+        self.target.fill_solid(&rows, color)
     }
 }
 

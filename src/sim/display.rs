@@ -8,6 +8,7 @@ use std::vec;
 use embedded_graphics_core::{
     draw_target::DrawTarget,
     geometry::{Dimensions, OriginDimensions, Point, Size},
+    image::GetPixel,
     pixelcolor::{PixelColor, Rgb888, RgbColor},
     primitives::Rectangle,
     Pixel,
@@ -448,6 +449,16 @@ impl<C: PixelColor> SpanSink<C> for SimDisplay<C> {
 
     fn fill_span(&mut self, span: Span, color: C) -> Result<(), Self::Error> {
         self.fill_solid(&span.rect(), color)
+    }
+}
+
+/// [`SimDisplay::pixel`], for code written against embedded-graphics'
+/// image traits (such as [`WriteTo`](crate::band::WriteTo)).
+impl<C: PixelColor> GetPixel for SimDisplay<C> {
+    type Color = C;
+
+    fn pixel(&self, p: Point) -> Option<C> {
+        SimDisplay::pixel(self, p)
     }
 }
 

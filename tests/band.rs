@@ -1,0 +1,292 @@
+//! Band rendering against the whole frame: for random display lists of
+//! every command (including depth), any band height gives the same pixels
+//! and the same write count per pixel as drawing the list on one
+//! whole-screen target, at every band boundary.
+#![cfg(feature = "sim")]
+
+#[path = "common/rng.rs"]
+mod rng;
+
+use embedded_graphics::{
+    pixelcolor::{Rgb888, RgbColor},
+    prelude::*,
+    primitives::Rectangle,
+};
+use embedded_raster::{
+    band::{render_in_bands, Command, DisplayList},
+    shade::DepthBuffer,
+    sim::SimDisplay,
+    FillRule, Line, Polygon, Polyline, Triangle, Vertex,
+};
+use proptest::prelude::*;
+use rng::Rng;
+
+const W: u32 = 37;
+const H: u32 = 29;
+
+/// A y coordinate (raw 20.12) that is often exactly on a band boundary
+/// for the tested heights, or a pixel centre next to one.
+fn boundary_y(rng: &mut Rng) -> i32 {
+    let row = [0, 1, 2, 3, 4, 6, 7, 8, 14, 15, 16, 21, 28, 29][rng.below(14) as usize];
+    let offset = [0, 2048, -2048, 1, -1][rng.below(5) as usize];
+    row * 4096 + offset
+}
+
+fn coordinate(rng: &mut Rng, side: u32) -> i32 {
+    // Mostly on screen, some far off it, fractional.
+    match rng.below(8) {
+        0 => rng.below(1 << 24) as i32 - (1 << 23),
+        _ => rng.below(u64::from(side + 8) * 4096) as i32 - 4 * 4096,
+    }
+}
+
+fn vertex(rng: &mut Rng) -> Vertex {
+    let x = coordinate(rng, W);
+    let y = if rng.below(2) == 0 {
+        boundary_y(rng)
+    } else {
+        coordinate(rng, H)
+    };
+    Vertex::from_raw(x, y)
+}
+
+fn point(rng: &mut Rng) -> Point {
+    let x = rng.below(u64::from(W) + 10) as i32 - 5;
+    let y = match rng.below(3) {
+        0 => boundary_y(rng) >> 12,
+        _ => rng.below(u64::from(H) + 10) as i32 - 5,
+    };
+    Point::new(x, y)
+}
+
+fn color(rng: &mut Rng) -> Rgb888 {
+    let c = rng.next();
+    Rgb888::new(c as u8, (c >> 8) as u8, (c >> 16) as u8)
+}
+
+/// Storage the borrowed commands point into.
+struct Shapes {
+    polylines: Vec<Vec<Point>>,
+    polygons: Vec<Vec<Vertex>>,
+}
+
+fn shapes(rng: &mut Rng) -> Shapes {
+    let polylines = (0..3)
+        .map(|_| (0..2 + rng.below(5)).map(|_| point(rng)).collect())
+        .collect();
+    let polygons = (0..2)
+        .map(|_| (0..3 + rng.below(6)).map(|_| vertex(rng)).collect())
+        .collect();
+    Shapes {
+        polylines,
+        polygons,
+    }
+}
+
+fn list<'a>(rng: &mut Rng, shapes: &'a Shapes) -> DisplayList<'a, Rgb888, 64, 16> {
+    let mut list = DisplayList::new();
+    list.push(Command::Clear(color(rng))).unwrap();
+    for _ in 0..24 {
+        let triangle = Triangle::new(vertex(rng), vertex(rng), vertex(rng));
+        let z = [0, 0, 0].map(|_: i32| rng.below(65536) as u16);
+        let command = match rng.below(10) {
+            0 => {
+                let area = Rectangle::new(
+                    point(rng),
+                    Size::new(rng.below(20) as u32, rng.below(20) as u32),
+                );
+                Command::Rect(area, color(rng))
+            }
+            1 => Command::Triangle(triangle.fill(color(rng))),
+            2 => Command::Gouraud(triangle.gouraud([color(rng), color(rng), color(rng)])),
+            3 => Command::DepthTriangle(triangle.fill(color(rng)), z),
+            4 => Command::DepthGouraud(triangle.gouraud([color(rng), color(rng), color(rng)]), z),
+            5 => Command::Line(Line::new(point(rng), point(rng)).stroke(color(rng))),
+            6 => {
+                let width = rng.below(7) as u32;
+                Command::Line(
+                    Line::new(point(rng), point(rng))
+                        .stroke(color(rng))
+                        .stroke_width(width),
+                )
+            }
+            7 => {
+                let points = &shapes.polylines[rng.below(3) as usize];
+                let width = [1, 1, 2, 5][rng.below(4) as usize];
+                Command::Polyline(Polyline::new(points).stroke(color(rng)).stroke_width(width))
+            }
+            _ => {
+                let vertices = &shapes.polygons[rng.below(2) as usize];
+                let rule = [FillRule::EvenOdd, FillRule::NonZero][rng.below(2) as usize];
+                let polygon = Polygon::<16>::new(vertices).unwrap();
+                Command::Polygon(polygon.fill(color(rng)).with_rule(rule))
+            }
+        };
+        list.push(command).unwrap();
+    }
+    list
+}
+
+/// The list drawn on one whole-screen display with a whole-screen depth
+/// buffer.
+fn whole(list: &DisplayList<'_, Rgb888, 64, 16>) -> SimDisplay<Rgb888> {
+    let mut display = SimDisplay::new(W, H, Rgb888::BLACK);
+    let mut z = vec![0u16; (W * H) as usize];
+    let depth = DepthBuffer::new(&mut z, W);
+    depth.clear();
+    list.draw_with_depth(&mut display, Some(depth)).unwrap();
+    display
+}
+
+/// The list rendered in bands of `rows` rows through `buffers` buffers,
+/// each band's pixels and write counts copied into a whole-screen image.
+fn banded(
+    list: &DisplayList<'_, Rgb888, 64, 16>,
+    rows: u32,
+    buffers: usize,
+) -> (Vec<Rgb888>, Vec<u32>) {
+    let mut pixels = vec![Rgb888::BLACK; (W * H) as usize];
+    let mut counts = vec![0u32; (W * H) as usize];
+    let mut bufs: Vec<SimDisplay<Rgb888>> = (0..buffers)
+        .map(|_| SimDisplay::new(W, rows, Rgb888::BLACK))
+        .collect();
+    // Each buffer's counts accumulate over the bands it held: keep the last
+    // snapshot of each to take the difference.
+    let mut seen: Vec<Vec<u32>> = vec![vec![0; (W * rows) as usize]; buffers];
+    let mut next = 0;
+    let mut depth = vec![0u16; (W * rows) as usize];
+    let mut bands = 0;
+    render_in_bands(
+        H,
+        &mut bufs,
+        Some(&mut depth),
+        |band, depth| list.draw_band(band, depth),
+        &mut |buffer: &SimDisplay<Rgb888>, area: Rectangle| {
+            assert_eq!(area.size.width, W);
+            for r in 0..area.size.height as i32 {
+                for x in 0..W as i32 {
+                    let local = Point::new(x, r);
+                    let i = (r as u32 * W + x as u32) as usize;
+                    let screen = ((area.top_left.y + r) as u32 * W + x as u32) as usize;
+                    let total = buffer.write_count(local).unwrap();
+                    counts[screen] = total - seen[next][i];
+                    seen[next][i] = total;
+                    pixels[screen] = buffer.pixel(local).unwrap();
+                }
+            }
+            // Rows of the buffer below the screen are never written.
+            for r in area.size.height as i32..rows as i32 {
+                for x in 0..W as i32 {
+                    let i = (r as u32 * W + x as u32) as usize;
+                    assert_eq!(buffer.write_count(Point::new(x, r)).unwrap(), seen[next][i]);
+                }
+            }
+            assert_eq!(buffer.out_of_bounds_writes(), 0);
+            next = (next + 1) % buffers;
+            bands += 1;
+            Ok::<(), ()>(())
+        },
+    )
+    .unwrap();
+    assert_eq!(bands, H.div_ceil(rows));
+    (pixels, counts)
+}
+
+fn check(seed: u64) {
+    let mut rng = Rng(seed | 1);
+    let shapes = shapes(&mut rng);
+    let list = list(&mut rng, &shapes);
+    let reference = whole(&list);
+    let want_pixels = reference.pixels().to_vec();
+    let want_counts: Vec<u32> = (0..H as i32)
+        .flat_map(|y| (0..W as i32).map(move |x| Point::new(x, y)))
+        .map(|p| reference.write_count(p).unwrap())
+        .collect();
+    for rows in [1, 2, 3, 7, 8, 16, 28, 29, 240] {
+        for buffers in [1, 2] {
+            let (pixels, counts) = banded(&list, rows, buffers);
+            assert!(
+                pixels == want_pixels,
+                "pixels differ, bands of {rows}, seed {seed}"
+            );
+            assert!(
+                counts == want_counts,
+                "counts differ, bands of {rows}, seed {seed}"
+            );
+        }
+    }
+}
+
+proptest! {
+    #[test]
+    fn bands_equal_the_whole_frame(seed in any::<u64>()) {
+        check(seed);
+    }
+}
+
+/// A triangle whose vertices and a polyline whose joints lie exactly on
+/// band boundaries, and a line along a boundary row.
+#[test]
+fn shapes_on_band_boundaries() {
+    let shapes = Shapes {
+        polylines: vec![vec![
+            Point::new(1, 7),
+            Point::new(20, 8),
+            Point::new(5, 16),
+            Point::new(30, 16),
+        ]],
+        polygons: vec![vec![
+            Vertex::from_raw(0, 8 * 4096),
+            Vertex::from_raw(36 * 4096, 16 * 4096),
+            Vertex::from_raw(3 * 4096, 28 * 4096 + 2048),
+        ]],
+    };
+    let mut list = DisplayList::<Rgb888, 64, 16>::new();
+    list.push(Command::Clear(Rgb888::BLACK)).unwrap();
+    let t = Triangle::new(
+        Vertex::from_raw(2048, 7 * 4096 + 2048),
+        Vertex::from_raw(30 * 4096, 8 * 4096),
+        Vertex::from_raw(10 * 4096, 16 * 4096 + 2048),
+    );
+    list.push(Command::Triangle(t.fill(Rgb888::RED))).unwrap();
+    list.push(Command::Polyline(
+        Polyline::new(&shapes.polylines[0]).stroke(Rgb888::GREEN),
+    ))
+    .unwrap();
+    list.push(Command::Polyline(
+        Polyline::new(&shapes.polylines[0])
+            .stroke(Rgb888::WHITE)
+            .stroke_width(3),
+    ))
+    .unwrap();
+    let polygon = Polygon::<16>::new(&shapes.polygons[0]).unwrap();
+    list.push(Command::Polygon(polygon.fill(Rgb888::BLUE)))
+        .unwrap();
+    list.push(Command::Line(
+        Line::new(Point::new(0, 8), Point::new(36, 8)).stroke(Rgb888::CYAN),
+    ))
+    .unwrap();
+    let reference = whole(&list);
+    for rows in [1, 4, 7, 8, 16] {
+        let (pixels, counts) = banded(&list, rows, 2);
+        assert_eq!(pixels, reference.pixels(), "bands of {rows}");
+        let want: Vec<u32> = (0..H as i32)
+            .flat_map(|y| (0..W as i32).map(move |x| Point::new(x, y)))
+            .map(|p| reference.write_count(p).unwrap())
+            .collect();
+        assert_eq!(counts, want, "bands of {rows}");
+    }
+}
+
+/// Commands are culled by rows: a band none of a command's rows meet does
+/// not see it (a list of one line far below the screen writes nothing).
+#[test]
+fn commands_outside_every_band_write_nothing() {
+    let mut list = DisplayList::<Rgb888, 64, 16>::new();
+    list.push(Command::Line(
+        Line::new(Point::new(0, 100), Point::new(30, 120)).stroke(Rgb888::RED),
+    ))
+    .unwrap();
+    let (_, counts) = banded(&list, 8, 1);
+    assert!(counts.iter().all(|&c| c == 0));
+}
