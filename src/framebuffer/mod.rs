@@ -88,7 +88,10 @@
 
 mod format;
 
-pub use format::{BinaryMsb, Gray8Bytes, PixelFormat, Rgb565Be, Rgb565Le, Rgb888Bytes};
+pub use format::{
+    Bgr565Be, Bgr565Le, BinaryMsb, Gray2Lsb, Gray2Msb, Gray4Lsb, Gray4Msb, Gray8Bytes, PixelFormat,
+    Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
+};
 
 use core::{convert::Infallible, fmt, marker::PhantomData, ops::Range, slice::ChunksExactMut};
 
