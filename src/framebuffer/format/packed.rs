@@ -52,6 +52,14 @@ pub struct BinaryMsb;
 /// assert_eq!(fb.pixel(Point::new(2, 0)), Some(Gray4::new(0x5)));
 /// # Ok::<(), core::convert::Infallible>(())
 /// ```
+///
+/// The padding counts in the size, checked at compile time:
+///
+/// ```compile_fail
+/// use embedded_raster::{framebuffer::Gray4Msb, Framebuffer};
+///
+/// let fb = Framebuffer::<Gray4Msb, 3, 2, 3>::new(); // needs 2 x 2 bytes
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Gray4Msb;
@@ -135,8 +143,11 @@ pub struct Gray2Lsb;
 struct Packed<const BITS: u32, const MSB_FIRST: bool>;
 
 impl<const BITS: u32, const MSB_FIRST: bool> Packed<BITS, MSB_FIRST> {
-    /// Pixels per byte.
-    const PER_BYTE: usize = 8 / BITS as usize;
+    /// Pixels per byte; `BITS` must be 1, 2 or 4 (checked at compile time).
+    const PER_BYTE: usize = {
+        assert!(BITS == 1 || BITS == 2 || BITS == 4);
+        8 / BITS as usize
+    };
 
     /// The largest pixel value, and the mask of slot bits at shift 0.
     const MAX: u8 = (1 << BITS) - 1;
@@ -151,7 +162,7 @@ impl<const BITS: u32, const MSB_FIRST: bool> Packed<BITS, MSB_FIRST> {
         }
     }
 
-    /// The bits of slot `k` and every slot to its right (later pixels).
+    /// The bits of slot `k` and of every later slot (pixels to its right).
     const fn from_slot(k: usize) -> u8 {
         if MSB_FIRST {
             0xFF >> (k as u32 * BITS)
@@ -160,7 +171,7 @@ impl<const BITS: u32, const MSB_FIRST: bool> Packed<BITS, MSB_FIRST> {
         }
     }
 
-    /// The bits of slot `k` and every slot to its left (earlier pixels).
+    /// The bits of slot `k` and of every earlier slot (pixels to its left).
     const fn to_slot(k: usize) -> u8 {
         if MSB_FIRST {
             0xFF << Self::shift(k)
