@@ -53,7 +53,7 @@
 //! | [`shade`], [`GouraudTriangle`] | shading: the rounded average of vertex colours, Gouraud blends within 1 unit per channel (no per-pixel division), interpolated `u16` depth tested against a caller's [`DepthBuffer`](shade::DepthBuffer), each a separate type so flat-only code links none of it |
 //! | [`delaunay`] | Delaunay triangulation of up to `N` points in fixed storage ([`Delaunay`](delaunay::Delaunay)), incremental with Lawson flips, exact integer orientation and in-circle tests over the whole 20.12 range, deterministic on duplicates, collinear and cocircular points |
 //! | [`mesh`] | fixed-point 3D without floats: table sine/cosine, rotation, perspective projection to vertices and depths, an allocation-free latitude/longitude sphere |
-//! | [`framebuffer`] | [`Framebuffer`], an owned const-sized [`DrawTarget`] and [`SpanSink`] for Rgb565 (both byte orders), Rgb888, Gray8 and 1-bit, filled with aligned word stores |
+//! | [`framebuffer`] | [`Framebuffer`], an owned const-sized [`DrawTarget`] and [`SpanSink`] for Rgb565 and Bgr565 (both byte orders), Rgb888, 18-bit Rgb666, Gray8, Gray4 and Gray2 (both packing orders) and 1-bit, filled with `memset` and aligned word stores |
 //! | `sim` (feature `sim`) | the host simulator: an overdraw-counting display, PNG export, the scene-file renderer |
 //! | [`prelude`] | the crate's traits, to glob-import beside embedded-graphics' prelude without name clashes |
 //! | `convert` (feature `embedded-graphics`, private) | [`Triangle`], [`Line`] and [`Polyline`] from embedded-graphics' shapes of the same name |

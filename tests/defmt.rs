@@ -6,7 +6,10 @@
 
 use embedded_graphics_core::pixelcolor::{BinaryColor, Rgb565};
 use embedded_raster::{
-    framebuffer::{buffer_size, BinaryMsb, Gray8Bytes, Rgb565Be, Rgb565Le, Rgb888Bytes},
+    framebuffer::{
+        buffer_size, Bgr565Be, Bgr565Le, BinaryMsb, Gray2Lsb, Gray2Msb, Gray4Lsb, Gray4Msb,
+        Gray8Bytes, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
+    },
     CoordinateOutOfRange, FilledTriangle, Framebuffer, ParseCoordinateError, Span, Triangle,
     Vertex,
 };
@@ -27,5 +30,12 @@ fn value_types_implement_format() {
     implements_format::<Rgb888Bytes>();
     implements_format::<Gray8Bytes>();
     implements_format::<BinaryMsb>();
+    implements_format::<Bgr565Le>();
+    implements_format::<Bgr565Be>();
+    implements_format::<Rgb666Bytes>();
+    implements_format::<Gray4Msb>();
+    implements_format::<Gray4Lsb>();
+    implements_format::<Gray2Msb>();
+    implements_format::<Gray2Lsb>();
     implements_format::<Framebuffer<Rgb565Le, 4, 4, { buffer_size::<Rgb565Le>(4, 4) }>>();
 }

@@ -1,17 +1,21 @@
-//! `Framebuffer` against an independent pixel-by-pixel model, byte layouts
-//! written out by hand, and clipping of extreme rectangles.
+//! `Framebuffer` of every format against an independent pixel-by-pixel
+//! model, byte layouts written out by hand, and clipping of extreme
+//! rectangles.
 
 use core::fmt::Debug;
 
 use embedded_graphics_core::{
-    pixelcolor::{BinaryColor, Gray8, GrayColor, Rgb565, Rgb888, RgbColor},
+    pixelcolor::{
+        Bgr565, BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb565, Rgb666, Rgb888, RgbColor,
+    },
     prelude::*,
     primitives::Rectangle,
     Pixel,
 };
 use embedded_raster::{
     framebuffer::{
-        buffer_size, row_size, BinaryMsb, Gray8Bytes, PixelFormat, Rgb565Be, Rgb565Le, Rgb888Bytes,
+        buffer_size, row_size, Bgr565Be, Bgr565Le, BinaryMsb, Gray2Lsb, Gray2Msb, Gray4Lsb,
+        Gray4Msb, Gray8Bytes, PixelFormat, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
     },
     Framebuffer,
 };
@@ -110,6 +114,87 @@ impl Spec for BinaryMsb {
         bytes
     }
 }
+
+/// Bgr565 packed by hand: blue in bits 15..11, green 10..5, red 4..0.
+fn bgr565_raw(c: Bgr565) -> u16 {
+    (u16::from(c.b()) << 11) | (u16::from(c.g()) << 5) | u16::from(c.r())
+}
+
+fn arb_bgr565() -> impl Strategy<Value = Bgr565> {
+    arb_rgb565().prop_map(|c| Bgr565::new(c.r(), c.g(), c.b()))
+}
+
+byte_spec!(
+    Bgr565Le,
+    Bgr565,
+    arb_bgr565(),
+    |bits: u64| Bgr565::new(bits as u8, (bits >> 5) as u8, (bits >> 11) as u8),
+    |c| {
+        let raw = bgr565_raw(c);
+        [(raw & 0xFF) as u8, (raw >> 8) as u8]
+    }
+);
+byte_spec!(
+    Bgr565Be,
+    Bgr565,
+    arb_bgr565(),
+    |bits: u64| Bgr565::new(bits as u8, (bits >> 5) as u8, (bits >> 11) as u8),
+    |c| {
+        let raw = bgr565_raw(c);
+        [(raw >> 8) as u8, (raw & 0xFF) as u8]
+    }
+);
+byte_spec!(
+    Rgb666Bytes,
+    Rgb666,
+    prop_oneof![
+        3 => (0u8..64, 0u8..64, 0u8..64).prop_map(|(r, g, b)| Rgb666::new(r, g, b)),
+        1 => (0u8..64).prop_map(|v| Rgb666::new(v, v, v)),
+    ],
+    |bits: u64| Rgb666::new(bits as u8, (bits >> 6) as u8, (bits >> 12) as u8),
+    // Each channel times 4: its 6 bits at the top of the byte.
+    |c: Rgb666| [c.r() * 4, c.g() * 4, c.b() * 4]
+);
+
+/// `values` (each under `2^bits`) packed `8 / bits` to a byte, the first
+/// of each byte at the top (`msb_first`) or at the bottom; padding 0.
+fn pack(values: &[u8], bits: usize, msb_first: bool) -> Vec<u8> {
+    let per_byte = 8 / bits;
+    let mut bytes = vec![0u8; values.len().div_ceil(per_byte)];
+    for (x, &v) in values.iter().enumerate() {
+        let slot = x % per_byte;
+        let shift = if msb_first {
+            8 - bits * (slot + 1)
+        } else {
+            bits * slot
+        };
+        bytes[x / per_byte] |= v << shift;
+    }
+    bytes
+}
+
+/// A [`Spec`] for a packed grey format of `$bits` bits.
+macro_rules! gray_spec {
+    ($f:ty, $color:ident, $bits:literal, $msb_first:literal) => {
+        impl Spec for $f {
+            fn arb_color() -> BoxedStrategy<$color> {
+                (0u8..1 << $bits).prop_map($color::new).boxed()
+            }
+            fn color_from(bits: u64) -> $color {
+                $color::new(bits as u8 % (1 << $bits))
+            }
+            fn encode_row(px: &[$color]) -> Vec<u8> {
+                let values: Vec<u8> = px.iter().map(|c| c.luma()).collect();
+                pack(&values, $bits, $msb_first)
+            }
+        }
+    };
+}
+
+gray_spec!(Gray4Msb, Gray4, 4, true);
+gray_spec!(Gray4Lsb, Gray4, 4, false);
+gray_spec!(Gray2Msb, Gray2, 2, true);
+gray_spec!(Gray2Lsb, Gray2, 2, false);
 
 /// The expected bytes of a framebuffer `w` pixels wide holding `px`.
 fn encode<F: Spec>(w: usize, px: &[F::Color]) -> Vec<u8> {
@@ -359,6 +444,18 @@ model_test!(model_binary_10x4, BinaryMsb, 10, 4);
 model_test!(model_binary_16x3, BinaryMsb, 16, 3);
 model_test!(model_binary_3x5, BinaryMsb, 3, 5);
 model_test!(model_binary_37x2, BinaryMsb, 37, 2);
+model_test!(model_bgr565le_10x4, Bgr565Le, 10, 4);
+model_test!(model_bgr565be_37x2, Bgr565Be, 37, 2);
+model_test!(model_rgb666_10x4, Rgb666Bytes, 10, 4);
+model_test!(model_rgb666_37x2, Rgb666Bytes, 37, 2);
+model_test!(model_gray4msb_10x4, Gray4Msb, 10, 4);
+model_test!(model_gray4msb_7x3, Gray4Msb, 7, 3);
+model_test!(model_gray4lsb_10x4, Gray4Lsb, 10, 4);
+model_test!(model_gray4lsb_37x2, Gray4Lsb, 37, 2);
+model_test!(model_gray2msb_10x4, Gray2Msb, 10, 4);
+model_test!(model_gray2msb_16x3, Gray2Msb, 16, 3);
+model_test!(model_gray2lsb_7x3, Gray2Lsb, 7, 3);
+model_test!(model_gray2lsb_37x2, Gray2Lsb, 37, 2);
 
 /// Every colour survives a round trip through each pixel.
 fn round_trip<F: Spec, const W: usize, const H: usize, const N: usize>(
@@ -388,6 +485,16 @@ proptest! {
         round_trip::<Rgb888Bytes, 3, 2, { buffer_size::<Rgb888Bytes>(3, 2) }>(c888)?;
         round_trip::<Gray8Bytes, 3, 2, { buffer_size::<Gray8Bytes>(3, 2) }>(Gray8::new(gray))?;
         round_trip::<BinaryMsb, 11, 2, { buffer_size::<BinaryMsb>(11, 2) }>(BinaryColor::from(on))?;
+        let bgr = Bgr565::new(c565.r(), c565.g(), c565.b());
+        round_trip::<Bgr565Le, 3, 2, { buffer_size::<Bgr565Le>(3, 2) }>(bgr)?;
+        round_trip::<Bgr565Be, 3, 2, { buffer_size::<Bgr565Be>(3, 2) }>(bgr)?;
+        let c666 = Rgb666::new(c888.r(), c888.g(), c888.b()); // high bits dropped
+        round_trip::<Rgb666Bytes, 3, 2, { buffer_size::<Rgb666Bytes>(3, 2) }>(c666)?;
+        let (g4, g2) = (Gray4::new(gray), Gray2::new(gray)); // high bits dropped
+        round_trip::<Gray4Msb, 5, 2, { buffer_size::<Gray4Msb>(5, 2) }>(g4)?;
+        round_trip::<Gray4Lsb, 5, 2, { buffer_size::<Gray4Lsb>(5, 2) }>(g4)?;
+        round_trip::<Gray2Msb, 7, 2, { buffer_size::<Gray2Msb>(7, 2) }>(g2)?;
+        round_trip::<Gray2Lsb, 7, 2, { buffer_size::<Gray2Lsb>(7, 2) }>(g2)?;
     }
 }
 
@@ -599,6 +706,9 @@ fn empty_framebuffers_ignore_everything() {
     exercise::<Rgb888Bytes, 4, 0, 0>();
     exercise::<BinaryMsb, 0, 0, 0>();
     exercise::<Gray8Bytes, 0, 5, 0>();
+    exercise::<Rgb666Bytes, 0, 5, 0>();
+    exercise::<Gray4Lsb, 0, 2, 0>();
+    exercise::<Gray2Msb, 3, 0, 0>();
 }
 
 #[test]

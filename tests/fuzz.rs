@@ -37,12 +37,15 @@ mod line_ref;
 mod rng;
 
 use embedded_graphics_core::{
-    pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888, RgbColor},
+    pixelcolor::{Bgr565, BinaryColor, Gray2, Gray4, Gray8, Rgb565, Rgb666, Rgb888, RgbColor},
     prelude::*,
     primitives::Rectangle,
 };
 use embedded_raster::{
-    framebuffer::{buffer_size, BinaryMsb, Gray8Bytes, Rgb565Be, Rgb565Le, Rgb888Bytes},
+    framebuffer::{
+        buffer_size, Bgr565Be, Bgr565Le, BinaryMsb, Gray2Lsb, Gray2Msb, Gray4Lsb, Gray4Msb,
+        Gray8Bytes, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
+    },
     mesh::{Camera, Rotation, Vec3},
     sim::{parse_scene, render_scene, SimDisplay},
     FillRule, Framebuffer, Line, LineAlgorithm, Polygon, Polyline, SpanDrawable, SpanSink,
@@ -238,6 +241,13 @@ fn on_every_target(target: &Target, origin: Point) -> Grid {
     check!(Rgb888Bytes, Rgb888, Rgb888::new(1, 2, 3));
     check!(Gray8Bytes, Gray8, Gray8::new(0x81));
     check!(BinaryMsb, BinaryColor, BinaryColor::On);
+    check!(Bgr565Le, Bgr565, Bgr565::new(31, 7, 3));
+    check!(Bgr565Be, Bgr565, Bgr565::new(1, 60, 30));
+    check!(Rgb666Bytes, Rgb666, Rgb666::new(63, 1, 40));
+    check!(Gray4Msb, Gray4, Gray4::new(0xB));
+    check!(Gray4Lsb, Gray4, Gray4::new(0x6));
+    check!(Gray2Msb, Gray2, Gray2::new(2));
+    check!(Gray2Lsb, Gray2, Gray2::new(1));
     lit
 }
 

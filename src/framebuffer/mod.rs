@@ -17,9 +17,21 @@
 //! |---|---|---|---|
 //! | [`Rgb565Le`] | `Rgb565` | 2 | low byte first |
 //! | [`Rgb565Be`] | `Rgb565` | 2 | high byte first (SPI panels: ST7789, ILI9341, ...) |
+//! | [`Bgr565Le`] | `Bgr565` | 2 | low byte first |
+//! | [`Bgr565Be`] | `Bgr565` | 2 | high byte first (SPI panels in BGR order) |
 //! | [`Rgb888Bytes`] | `Rgb888` | 3 | red, green, blue |
+//! | [`Rgb666Bytes`] | `Rgb666` | 3 | red, green, blue, 6 bits each in the high bits of its byte (18-bit SPI: ILI9341, ST7796, ...) |
 //! | [`Gray8Bytes`] | `Gray8` | 1 | luma |
+//! | [`Gray4Msb`] | `Gray4` | 1/2 | 2 per byte, leftmost in the high nibble (SSD1322), rows padded to whole bytes |
+//! | [`Gray4Lsb`] | `Gray4` | 1/2 | 2 per byte, leftmost in the low nibble (SSD1327), rows padded to whole bytes |
+//! | [`Gray2Msb`] | `Gray2` | 1/4 | 4 per byte, leftmost in bits 7-6, rows padded to whole bytes |
+//! | [`Gray2Lsb`] | `Gray2` | 1/4 | 4 per byte, leftmost in bits 1-0, rows padded to whole bytes |
 //! | [`BinaryMsb`] | `BinaryColor` | 1/8 | 8 per byte, leftmost in bit 7, rows padded to whole bytes |
+//!
+//! Colours become bits through embedded-graphics' own raw values
+//! ([`IntoStorage`](embedded_graphics_core::pixelcolor::IntoStorage)), so
+//! every format but [`Rgb666Bytes`] and the `Lsb` ones stores the bytes
+//! of embedded-graphics' `Framebuffer` of the same colour and byte order.
 //!
 //! An Rgb565 pixel is 16 bits, red in the top 5, then green in 6, then
 //! blue in 5. Pixel `x` of a row takes bytes `2x` and `2x + 1`:
@@ -36,6 +48,15 @@
 //! e.g. Rgb565::RED = 0xF800:  Be [0xF8, 0x00],  Le [0x00, 0xF8]
 //! ```
 //!
+//! Bgr565 is the same with red and blue swapped: blue in the top 5 bits
+//! (`Bgr565::BLUE` = 0xF800). An [`Rgb666Bytes`] pixel takes bytes `3x`
+//! to `3x + 2`, the low 2 bits of each 0 (and ignored when read):
+//!
+//! ```text
+//!              byte 3x                  byte 3x + 1              byte 3x + 2
+//! Rgb666Bytes  R5 R4 R3 R2 R1 R0 0 0    G5 G4 G3 G2 G1 G0 0 0    B5 B4 B3 B2 B1 B0 0 0
+//! ```
+//!
 //! [`BinaryMsb`] packs pixel `x` of a row into bit `7 - x % 8` of the
 //! row's byte `x / 8`, `On` as 1. A row of 10 pixels takes 2 bytes; the
 //! low 6 bits of its second byte are padding, which drawing never changes:
@@ -44,6 +65,20 @@
 //!            byte 0                    byte 1
 //! bit        7  6  5  4  3  2  1  0    7  6  5  4  3  2  1  0
 //! pixel x    0  1  2  3  4  5  6  7    8  9  -  -  -  -  -  -
+//! ```
+//!
+//! The grey formats pack the same way in 4-bit slots (2 pixels a byte) or
+//! 2-bit slots (4 a byte), the pixel's luma as the slot's value, filling
+//! each byte from its most significant end (`Msb`) or its least (`Lsb`).
+//! A row of 3 pixels `a`, `b`, `c`, then padding `-`:
+//!
+//! ```text
+//!            byte 0                    byte 1
+//! bit        7  6  5  4  3  2  1  0    7  6  5  4  3  2  1  0
+//! Gray4Msb   a3 a2 a1 a0 b3 b2 b1 b0   c3 c2 c1 c0 -  -  -  -
+//! Gray4Lsb   b3 b2 b1 b0 a3 a2 a1 a0   -  -  -  -  c3 c2 c1 c0
+//! Gray2Msb   a1 a0 b1 b0 c1 c0 -  -
+//! Gray2Lsb   -  -  c1 c0 b1 b0 a1 a0
 //! ```
 //!
 //! Other layouts can be added by implementing [`PixelFormat`].
@@ -55,7 +90,8 @@
 //! [`clear`](DrawTarget::clear) clip the area once and then fill whole
 //! byte slices per row (one slice for all rows when the area spans whole
 //! rows without padding): a `memset` for single-byte or uniform pixels,
-//! masked end bytes and a `memset` between for 1-bit pixels, and for 2-,
+//! masked end bytes and a `memset` of the repeated byte between for packed
+//! (1-, 2- and 4-bit) pixels, and for 2-,
 //! 3- and 4-byte pixels on 32-bit ARM aligned 32-bit words of the repeated
 //! pattern, 8 words a step (runs of `strd` on a Cortex-M4); other hosts'
 //! compilers vectorize the plain pixel loop. The bytes start on a 4-byte
@@ -90,7 +126,10 @@ mod format;
 #[cfg(feature = "sim")]
 mod png;
 
-pub use format::{BinaryMsb, Gray8Bytes, PixelFormat, Rgb565Be, Rgb565Le, Rgb888Bytes};
+pub use format::{
+    Bgr565Be, Bgr565Le, BinaryMsb, Gray2Lsb, Gray2Msb, Gray4Lsb, Gray4Msb, Gray8Bytes, PixelFormat,
+    Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
+};
 
 use core::{convert::Infallible, fmt, marker::PhantomData, ops::Range, slice::ChunksExactMut};
 
@@ -144,11 +183,13 @@ pub const fn row_size<F: PixelFormat>(width: usize) -> usize {
 /// # Examples
 ///
 /// ```
-/// use embedded_raster::framebuffer::{buffer_size, BinaryMsb, Gray8Bytes, Rgb565Be};
+/// use embedded_raster::framebuffer::{buffer_size, BinaryMsb, Gray4Msb, Gray8Bytes, Rgb565Be};
 ///
 /// assert_eq!(buffer_size::<Rgb565Be>(320, 240), 153_600);
 /// assert_eq!(buffer_size::<Gray8Bytes>(3, 2), 6);
 /// assert_eq!(buffer_size::<BinaryMsb>(10, 3), 6); // each row padded to 2 bytes
+/// assert_eq!(buffer_size::<Gray4Msb>(3, 2), 4); // each row padded to 2 bytes
+/// assert_eq!(buffer_size::<Gray4Msb>(256, 64), 8192); // an SSD1322
 /// ```
 pub const fn buffer_size<F: PixelFormat>(width: usize, height: usize) -> usize {
     match row_size::<F>(width).checked_mul(height) {
