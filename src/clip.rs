@@ -99,3 +99,12 @@ pub(crate) fn advance<I: Iterator>(iter: &mut I, mut n: u64) -> bool {
     }
     true
 }
+
+/// The part of `area` inside `bounds`, or `None` if there is none.
+pub(crate) fn clip_rect(area: &Rectangle, bounds: &Rectangle) -> Option<Rectangle> {
+    Some(
+        Bounds::of(area)
+            .intersect(Bounds::of(bounds))?
+            .to_rectangle(),
+    )
+}

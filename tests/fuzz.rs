@@ -47,9 +47,9 @@ use embedded_raster::{
         Gray8Bytes, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
     },
     mesh::{Camera, Rotation, Vec3},
-    sim::{parse_scene, render_scene, SimDisplay},
+    sim::{parse_scene, render_scene, render_scene_in_bands, SimDisplay},
     FillRule, Framebuffer, Line, LineAlgorithm, Polygon, Polyline, SpanDrawable, SpanSink,
-    Triangle, Vertex,
+    SubpixelPrecision, Triangle, TriangleAlgorithm, Vertex,
 };
 
 use common::{add_spans_from, rasterized, reference_fill, reference_triangle, Grid};
@@ -609,8 +609,16 @@ fn fuzz_scenes() {
             "{text}: {} > {work}",
             rendered.stats.pixels_written
         );
+        // Through the band renderer, in bands of a random height: the same
+        // image and the same write counts.
+        let rows = [1, 2, 3, 7, 16, 64][r.below(6) as usize];
+        let (algo, bits) = (TriangleAlgorithm::EdgeExact, SubpixelPrecision::Bits12);
+        let (banded, _) = render_scene_in_bands(&scene, rows, algo, bits);
+        let (a, b) = (&banded.display, &rendered.display);
+        assert!(a.pixels() == b.pixels(), "bands of {rows}: {text}");
+        assert!(a.counts() == b.counts(), "bands of {rows}: {text}");
     }
-    println!("fuzz_scenes: {n} inputs, {parsed} parsed and rendered");
+    println!("fuzz_scenes: {n} inputs, {parsed} parsed and rendered, whole and in bands");
 }
 
 #[test]

@@ -10,7 +10,7 @@ use embedded_graphics_core::{
 
 use super::{render_in_bands, Band, BandOutput, RenderError};
 use crate::{
-    clip::Bounds,
+    clip::{clip_rect, Bounds},
     line::{StyledLine, StyledPolyline},
     polygon::FilledPolygon,
     raster::sink::{DrawTargetSink, SpanDrawable, SpanSink},
@@ -365,21 +365,23 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
             match &entry.command {
                 Command::Clear(color) => DrawTarget::clear(target, *color)?,
                 Command::Rect(area, color) => {
-                    if let Some(visible) = clip(area, &SpanSink::bounds(target)) {
+                    if let Some(visible) = clip_rect(area, &SpanSink::bounds(target)) {
                         target.fill_rect(&visible, *color)?;
                     }
                 }
                 Command::Triangle(t) => t.draw_spans(target)?,
                 Command::TriangleVariant(t) => t.draw_spans(target)?,
                 Command::Gouraud(t) => t.draw(target)?,
-                Command::DepthTriangle(t, z) => match depth {
-                    Some(depth) => t.with_depth(*z, depth).draw(target)?,
-                    None => {}
-                },
-                Command::DepthGouraud(t, z) => match depth {
-                    Some(depth) => t.with_depth(*z, depth).draw(target)?,
-                    None => {}
-                },
+                Command::DepthTriangle(t, z) => {
+                    if let Some(depth) = depth {
+                        t.with_depth(*z, depth).draw(target)?;
+                    }
+                }
+                Command::DepthGouraud(t, z) => {
+                    if let Some(depth) = depth {
+                        t.with_depth(*z, depth).draw(target)?;
+                    }
+                }
                 Command::Line(l) => l.draw_spans(target)?,
                 Command::Polyline(p) => p.draw_spans(target)?,
                 Command::Polygon(p) => p.draw_spans(target)?,
@@ -500,15 +502,6 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
             output,
         )
     }
-}
-
-/// The part of `area` inside `bounds`, or `None`.
-fn clip(area: &Rectangle, bounds: &Rectangle) -> Option<Rectangle> {
-    Some(
-        Bounds::of(area)
-            .intersect(Bounds::of(bounds))?
-            .to_rectangle(),
-    )
 }
 
 /// Draws the list in order on any `DrawTarget`, without depth (the

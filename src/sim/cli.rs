@@ -26,7 +26,7 @@ use std::{format, writeln};
 
 use embedded_graphics_core::geometry::OriginDimensions;
 
-use super::{parse_scene, render_scene_with};
+use super::{parse_scene, render_scene_in_bands, render_scene_with, BandStats};
 use crate::{triangle::SubpixelPrecision, triangle::TriangleAlgorithm};
 
 /// Exit code of a successful run (and of `--help`).
@@ -66,7 +66,7 @@ pub const EXIT_USAGE: i32 = 2;
 /// ```
 pub const USAGE: &str = "\
 usage: render SCENE -o OUT.png [--counts COUNTS.pgm] [--stats] [--algo NAME] [--bits N]
-              [--max-pixels N]
+              [--max-pixels N] [--band N]
 
 Renders a scene file to an 8-bit RGB PNG.
 
@@ -74,8 +74,10 @@ options:
   -o, --output OUT.png     where to write the image (required)
   --counts COUNTS.pgm      also write per-pixel write counts as a binary PGM
                            (P5, maxval 255, saturating)
-  --stats                  print {\"primitives\":N,\"pixels_written\":N,\"raster_seconds\":S}
-                           on stdout
+  --stats                  print {\"primitives\":N,\"pixels_written\":N,\"raster_seconds\":S,
+                           \"bands\":N,\"buffer_bytes\":N} on stdout (bands drawn and
+                           bytes of pixel buffer used: 1 and the whole frame
+                           without `--band`)
   --algo NAME              triangle algorithm for `tri` (default exact):
                              exact        exact edge equations, top-left rule
                              barycentric  exact, every pixel of the bounding box
@@ -87,6 +89,8 @@ options:
   --max-pixels N           refuse a scene whose estimated work is over N
                            pixels (the sum over its commands of the pixels
                            each can touch, clipped; default: no limit)
+  --band N                 render through the band renderer, N rows (>= 1) at a
+                           time, in one band buffer: the same image and counts
   -h, --help               print this help
 
 On a bad scene, prints `SCENE:LINE: what is wrong` on stderr, writes no
@@ -105,6 +109,7 @@ struct Options {
     algorithm: TriangleAlgorithm,
     precision: SubpixelPrecision,
     max_pixels: Option<u64>,
+    band: Option<u32>,
 }
 
 /// Runs the `render` command line on `args` (without the program name),
@@ -198,6 +203,7 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
     let mut algorithm = TriangleAlgorithm::EdgeExact;
     let mut precision = SubpixelPrecision::Bits12;
     let mut max_pixels = None;
+    let mut band = None;
     while let Some(arg) = args.next() {
         match arg.to_str() {
             Some("--algo") => {
@@ -225,6 +231,15 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
                     format!("`--max-pixels` must be a non-negative integer, got `{text}`")
                 })?;
                 max_pixels = Some(n);
+                continue;
+            }
+            Some("--band") => {
+                let v = args.next().ok_or("`--band` needs a number of rows")?;
+                let text = v.to_string_lossy();
+                let rows = text.parse::<u32>().ok().filter(|&n| n >= 1);
+                band = Some(rows.ok_or_else(|| {
+                    format!("`--band` must be a number of rows, 1 or more, got `{text}`")
+                })?);
                 continue;
             }
             _ => {}
@@ -263,6 +278,7 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
         algorithm,
         precision,
         max_pixels,
+        band,
     }))
 }
 
@@ -288,7 +304,18 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> 
             ));
         }
     }
-    let rendered = render_scene_with(&scene, options.algorithm, options.precision);
+    let size = scene.size();
+    let (rendered, bands) = match options.band {
+        Some(rows) => render_scene_in_bands(&scene, rows, options.algorithm, options.precision),
+        None => {
+            let whole = BandStats {
+                bands: 1,
+                buffer_bytes: u64::from(size.width) * u64::from(size.height) * 3,
+            };
+            let rendered = render_scene_with(&scene, options.algorithm, options.precision);
+            (rendered, whole)
+        }
+    };
 
     let mut png = Vec::new();
     rendered
@@ -307,8 +334,14 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> 
 
     write_all_or_nothing(&files)?;
     if options.stats {
-        writeln!(stdout, "{}", rendered.stats.to_json())
-            .map_err(|e| format!("cannot write to stdout: {e}"))?;
+        let json = rendered.stats.to_json();
+        let fields = format!(
+            r#","bands":{},"buffer_bytes":{}}}"#,
+            bands.bands, bands.buffer_bytes
+        );
+        // `to_json` is one object: its closing brace makes way for more.
+        let json = format!("{}{fields}", json.trim_end_matches('}'));
+        writeln!(stdout, "{json}").map_err(|e| format!("cannot write to stdout: {e}"))?;
     }
     let size = rendered.display.size();
     let stats = rendered.stats;

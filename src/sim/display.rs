@@ -283,6 +283,51 @@ impl<C: PixelColor> SimDisplay<C> {
         self.out_of_bounds = 0;
     }
 
+    /// Copies `rows` rows of `band` into this display's rows from `top`
+    /// down, counting as writes the growth of `band`'s counts since `seen`
+    /// (its counts when last pasted, updated here) and taking `background`
+    /// for pixels not written since: so one band buffer can be reused for
+    /// every band without clearing it. Rows outside either display are
+    /// skipped. How a band renderer's output is assembled.
+    pub(crate) fn paste_rows(
+        &mut self,
+        band: &SimDisplay<C>,
+        (top, rows): (i32, u32),
+        seen: &mut [u32],
+        background: C,
+    ) where
+        C: Copy,
+    {
+        let width = self.size.width.min(band.size.width) as usize;
+        for r in 0..rows.min(band.size.height) {
+            let Some(y) = top
+                .checked_add_unsigned(r)
+                .and_then(|y| u32::try_from(y).ok())
+            else {
+                continue;
+            };
+            if y >= self.size.height {
+                break;
+            }
+            // Both rows exist: the indices are in the vectors.
+            let from = r as usize * band.size.width as usize;
+            let to = y as usize * self.size.width as usize;
+            let source = band.pixels[from..from + width].iter();
+            let totals = band.counts[from..from + width].iter();
+            let before = seen.iter_mut().skip(from);
+            let pixels = self.pixels[to..to + width].iter_mut();
+            let counts = self.counts[to..to + width].iter_mut();
+            for ((((pixel, count), &color), &total), before) in
+                pixels.zip(counts).zip(source).zip(totals).zip(before)
+            {
+                // Counts only grow (saturating), so the difference is >= 0.
+                *count = total.saturating_sub(*before);
+                *pixel = if *count > 0 { color } else { background };
+                *before = total;
+            }
+        }
+    }
+
     /// Writes the write counts as a binary PGM image (`P5`, maxval 255):
     /// the header `P5\nW H\n255\n`, then one byte per pixel, row by row,
     /// each count saturating at 255.

@@ -42,5 +42,7 @@ mod render;
 mod scene;
 
 pub use display::{SimDisplay, WriteStats};
-pub use render::{render_scene, render_scene_with, RenderStats, Rendered};
+pub use render::{
+    render_scene, render_scene_in_bands, render_scene_with, BandStats, RenderStats, Rendered,
+};
 pub use scene::{parse_scene, Command, Scene, SceneError, MAX_SCENE_SIDE, SCENE_POLYGON_CAPACITY};

@@ -3,30 +3,21 @@
 use std::format;
 use std::prelude::rust_2021::*;
 use std::time::{Duration, Instant};
+use std::{boxed::Box, vec};
 
 use embedded_graphics_core::{
     draw_target::DrawTarget,
-    geometry::{Point, Size},
     pixelcolor::{Rgb888, RgbColor},
     primitives::Rectangle,
     Drawable,
 };
 
 use super::{scene::SCENE_POLYGON_CAPACITY, Command, Scene, SimDisplay};
-use crate::clip::Bounds;
+use crate::band::{self, render_in_bands, DisplayList};
+use crate::clip::clip_rect;
 use crate::{
     line::Polyline, polygon::Polygon, triangle::SubpixelPrecision, triangle::TriangleAlgorithm,
 };
-
-/// The part of `rect` inside `clip`, or `None` if there is none.
-fn clip(rect: &Rectangle, clip: &Rectangle) -> Option<Rectangle> {
-    let b = Bounds::of(rect).intersect(Bounds::of(clip))?;
-    // Inside `clip`, so every value fits again.
-    let top_left = Point::new(i32::try_from(b.x0).ok()?, i32::try_from(b.y0).ok()?);
-    let width = u32::try_from(b.x1 - b.x0).ok()?;
-    let height = u32::try_from(b.y1 - b.y0).ok()?;
-    Some(Rectangle::new(top_left, Size::new(width, height)))
-}
 
 impl Command {
     /// Draws the command on `target`: `clear` with [`DrawTarget::clear`],
@@ -59,7 +50,7 @@ impl Command {
     pub fn draw<D: DrawTarget<Color = Rgb888>>(&self, target: &mut D) -> Result<(), D::Error> {
         match self {
             Self::Clear(color) => target.clear(*color),
-            Self::Rect(rect, color) => match clip(rect, &target.bounding_box()) {
+            Self::Rect(rect, color) => match clip_rect(rect, &target.bounding_box()) {
                 Some(visible) => target.fill_solid(&visible, *color),
                 None => Ok(()),
             },
@@ -251,4 +242,148 @@ pub fn render_scene_with(
         raster_time,
     };
     Rendered { display, stats }
+}
+
+/// Commands per display list when a scene is rendered in bands (a scene
+/// of more is several lists, drawn in order in each band).
+const LIST_CAPACITY: usize = 256;
+
+/// A scene's commands as display lists, in order.
+type SceneLists<'a> = Vec<Box<DisplayList<'a, Rgb888, LIST_CAPACITY, SCENE_POLYGON_CAPACITY>>>;
+
+/// The display-list command drawing `command` as
+/// [`Command::draw_with`] does.
+fn list_command(
+    command: &Command,
+    algorithm: TriangleAlgorithm,
+    precision: SubpixelPrecision,
+) -> Option<band::Command<'_, Rgb888, SCENE_POLYGON_CAPACITY>> {
+    let exact = algorithm == TriangleAlgorithm::EdgeExact && precision == SubpixelPrecision::Bits12;
+    Some(match command {
+        Command::Clear(color) => band::Command::Clear(*color),
+        Command::Rect(rect, color) => band::Command::Rect(*rect, *color),
+        Command::Tri(t, color) if exact => band::Command::Triangle(t.fill(*color)),
+        Command::Tri(t, color) => {
+            band::Command::TriangleVariant(t.fill(*color).algorithm(algorithm).precision(precision))
+        }
+        Command::Gtri(t, colors) => band::Command::Gouraud(t.gouraud(*colors)),
+        Command::Line(line, color) => band::Command::Line(line.stroke(*color)),
+        Command::Polyline(points, color) => {
+            band::Command::Polyline(Polyline::new(points).stroke(*color))
+        }
+        Command::Poly(vertices, rule, color) => {
+            // The parser checked the count; a hand-made command that does
+            // not fit draws nothing, as with `draw`.
+            let polygon = Polygon::<SCENE_POLYGON_CAPACITY>::new(vertices).ok()?;
+            band::Command::Polygon(polygon.fill(*color).with_rule(*rule))
+        }
+    })
+}
+
+/// How a scene was rendered in bands.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::sim::{parse_scene, render_scene_in_bands};
+/// use embedded_raster::{SubpixelPrecision, TriangleAlgorithm};
+///
+/// let scene = parse_scene("size 10 10\nclear #000000")?;
+/// let (_, bands) = render_scene_in_bands(&scene, 4, TriangleAlgorithm::EdgeExact, SubpixelPrecision::Bits12);
+/// assert_eq!((bands.bands, bands.buffer_bytes), (3, 10 * 4 * 3));
+/// # Ok::<(), embedded_raster::sim::SceneError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct BandStats {
+    /// Bands drawn.
+    pub bands: u32,
+    /// Bytes of the one band buffer (3 per `Rgb888` pixel), the pixel
+    /// memory the render needed.
+    pub buffer_bytes: u64,
+}
+
+/// Renders `scene` through the band renderer
+/// ([`band::render_in_bands`]), `rows` rows at a time (at least 1), into
+/// one `Rgb888` band buffer, and assembles the bands' pixels and write
+/// counts into a whole [`SimDisplay`]: the same image and counts as
+/// [`render_scene_with`], by the crate's band exactness.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::sim::{parse_scene, render_scene_in_bands, render_scene_with};
+/// use embedded_raster::{SubpixelPrecision, TriangleAlgorithm};
+///
+/// let scene = parse_scene("size 16 16\ntri 0 0 16 0 0 16 #FF0000\nline 0 15 15 0 #00ff00")?;
+/// let (algo, bits) = (TriangleAlgorithm::EdgeExact, SubpixelPrecision::Bits12);
+/// let (banded, stats) = render_scene_in_bands(&scene, 3, algo, bits);
+/// let whole = render_scene_with(&scene, algo, bits).display;
+/// assert_eq!(banded.display.pixels(), whole.pixels());
+/// assert_eq!(banded.display.counts(), whole.counts());
+/// assert_eq!(stats.bands, 6);
+/// # Ok::<(), embedded_raster::sim::SceneError>(())
+/// ```
+pub fn render_scene_in_bands(
+    scene: &Scene,
+    rows: u32,
+    algorithm: TriangleAlgorithm,
+    precision: SubpixelPrecision,
+) -> (Rendered, BandStats) {
+    let size = scene.size();
+    let rows = rows.clamp(1, size.height.max(1));
+    let mut lists: SceneLists<'_> = Vec::new();
+    for command in scene.commands() {
+        let Some(command) = list_command(command, algorithm, precision) else {
+            continue;
+        };
+        if lists.last().is_none_or(|l| l.len() == LIST_CAPACITY) {
+            lists.push(Box::new(DisplayList::new()));
+        }
+        if let Some(list) = lists.last_mut() {
+            // Not full: a new list was pushed if the last one was.
+            let _ = list.push(command);
+        }
+    }
+
+    let mut display = SimDisplay::new(size.width, size.height, Rgb888::BLACK);
+    let mut buffers = [SimDisplay::new(size.width, rows, Rgb888::BLACK)];
+    let mut stats = BandStats {
+        bands: 0,
+        buffer_bytes: u64::from(size.width) * u64::from(rows) * 3,
+    };
+    let mut seen = vec![0u32; size.width as usize * rows as usize];
+    let start = Instant::now();
+    let result = render_in_bands(
+        size.height,
+        &mut buffers,
+        None,
+        |target, _| {
+            lists
+                .iter()
+                .try_for_each(|list| list.draw_band(target, None))
+        },
+        &mut |buffer: &SimDisplay<Rgb888>, area: Rectangle| {
+            let rows = (area.top_left.y, area.size.height);
+            display.paste_rows(buffer, rows, &mut seen, Rgb888::BLACK);
+            stats.bands += 1;
+            Ok::<(), core::convert::Infallible>(())
+        },
+    );
+    let raster_time = start.elapsed();
+    // A `SimDisplay` cannot fail.
+    let Ok(()) = result.map_err(|e| match e {
+        band::RenderError::Draw(e) | band::RenderError::Flush(e) => e,
+    });
+    let stats_all = RenderStats {
+        primitives: scene.commands().len() as u64,
+        pixels_written: display.pixels_written(),
+        raster_time,
+    };
+    (
+        Rendered {
+            display,
+            stats: stats_all,
+        },
+        stats,
+    )
 }

@@ -117,8 +117,11 @@ fn cli_writes_png_counts_and_stats() {
     assert_eq!(out.lines().count(), 1, "{out}");
     let json = out.trim_end();
     let prefix = r#"{"primitives":3,"pixels_written":34,"raster_seconds":"#;
-    assert!(json.starts_with(prefix) && json.ends_with('}'), "{json}");
-    let seconds: f64 = json[prefix.len()..json.len() - 1].parse().unwrap();
+    let suffix = r#","bands":1,"buffer_bytes":72}"#; // the whole 6 x 4 Rgb888 frame
+    assert!(json.starts_with(prefix) && json.ends_with(suffix), "{json}");
+    let seconds: f64 = json[prefix.len()..json.len() - suffix.len()]
+        .parse()
+        .unwrap();
     assert!((0.0..10.0).contains(&seconds), "{json}");
 }
 
@@ -313,7 +316,9 @@ fn issue_12_failing_counts_writes_no_file() {
     assert!(png_file.0.exists() && pgm_file.0.exists());
     let tmp = entries_with(&std::env::temp_dir(), ".render-");
     let ours = std::format!(".render-{}-", std::process::id());
-    assert!(!tmp.iter().any(|n| n.contains(&ours)), "{tmp:?}");
+    // This test's files only: other tests render in parallel.
+    let left = |n: &&String| n.contains(&ours) && n.contains("-counts");
+    assert!(!tmp.iter().any(|n| left(&n)), "{tmp:?}");
 }
 
 /// Issue 12, item 3: `-o` naming the scene file overwrote the scene. Now it
@@ -431,4 +436,78 @@ fn issue_12_cost_of_a_rectangle_past_i32_max() {
     )
     .unwrap();
     assert_eq!(scene.pixel_work(), 16);
+}
+
+/// Issue 13: `--band N` writes the same PNG and counts as the whole-frame
+/// render, for every scene in `scenes/` and band heights 1, 7, 16 and
+/// 240, and `--stats` reports the bands and the band buffer's bytes.
+#[test]
+fn band_rendering_writes_identical_files() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut scenes: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| Some(e.ok()?.path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "scene"))
+        .collect();
+    scenes.sort();
+    assert!(scenes.len() >= 4, "{scenes:?}");
+    for scene in scenes {
+        let scene = scene.to_str().unwrap();
+        let (png, pgm) = (Temp::new("whole.png"), Temp::new("whole.pgm"));
+        let (code, _, err) = run(&[scene, "-o", &png.arg(), "--counts", &pgm.arg()]);
+        assert_eq!(code, 0, "{err}");
+        let (want_png, want_pgm) = (
+            std::fs::read(&png.0).unwrap(),
+            std::fs::read(&pgm.0).unwrap(),
+        );
+        let (w, h, _) = decode_png(&want_png);
+        for rows in [1, 7, 16, 240] {
+            let (png, pgm) = (Temp::new("band.png"), Temp::new("band.pgm"));
+            let band = rows.to_string();
+            let args = [
+                scene,
+                "-o",
+                &png.arg(),
+                "--counts",
+                &pgm.arg(),
+                "--band",
+                &band,
+                "--stats",
+            ];
+            let (code, out, err) = run(&args);
+            assert_eq!(code, 0, "{err}");
+            assert!(
+                std::fs::read(&png.0).unwrap() == want_png,
+                "{scene} --band {rows}: PNG differs"
+            );
+            assert!(
+                std::fs::read(&pgm.0).unwrap() == want_pgm,
+                "{scene} --band {rows}: counts differ"
+            );
+            let rows = rows.min(h);
+            let tail = format!(
+                r#","bands":{},"buffer_bytes":{}}}"#,
+                h.div_ceil(rows),
+                w * rows * 3
+            );
+            assert!(out.trim_end().ends_with(&tail), "{out}");
+        }
+    }
+}
+
+#[test]
+fn band_option_errors() {
+    let scene = Temp::with("band.scene", "size 2 2\n");
+    let png_file = Temp::new("band-err.png");
+    for bad in ["0", "-1", "x", "4294967296"] {
+        let (code, _, err) = run(&[&scene.arg(), "-o", &png_file.arg(), "--band", bad]);
+        assert_eq!(code, 2, "{bad}");
+        assert!(
+            err.starts_with("render: `--band` must be a number of rows"),
+            "{err}"
+        );
+    }
+    let (code, _, err) = run(&[&scene.arg(), "-o", &png_file.arg(), "--band"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("`--band` needs a number of rows"), "{err}");
 }
