@@ -1,4 +1,5 @@
-//! Puts `memory.x` on the linker's search path for the firmware examples.
+//! Puts `memory.x` on the linker's search path for the firmware examples
+//! (`memory-32k.x` in its place with the feature `firmware-32k`).
 //!
 //! Only when building for an ARM target with the `firmware` feature: the
 //! library itself needs no linker script, and a crate that depends on this
@@ -9,11 +10,15 @@ use std::{env, fs, path::PathBuf};
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed=memory.x");
+    println!("cargo:rerun-if-changed=memory-32k.x");
     let arm = env::var("CARGO_CFG_TARGET_ARCH").as_deref() == Ok("arm");
     let firmware = env::var_os("CARGO_FEATURE_FIRMWARE").is_some();
+    // `firmware-32k`: the band firmware's map, 32 KiB of RAM in all.
+    let small = env::var_os("CARGO_FEATURE_FIRMWARE_32K").is_some();
     if arm && firmware {
         let out = PathBuf::from(env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
-        fs::copy("memory.x", out.join("memory.x")).expect("copy memory.x to OUT_DIR");
+        let map = if small { "memory-32k.x" } else { "memory.x" };
+        fs::copy(map, out.join("memory.x")).expect("copy the memory map to OUT_DIR");
         println!("cargo:rustc-link-search={}", out.display());
     }
 }

@@ -8,8 +8,8 @@
 //!
 //! The scene, drawn in this order on a 320 x 240 `Rgb565` framebuffer:
 //!
-//! 1. a clear and rectangles through `fill_solid`, one of them partly and
-//!    one wholly off-screen;
+//! 1. a clear and rectangles, one of them partly and one wholly
+//!    off-screen;
 //! 2. a huge triangle (corners ~400 000 px away) whose only visible edge
 //!    crosses the screen: the 64-bit edge path ([`HUGE`]);
 //! 3. a large triangle with fractional corners;
@@ -22,7 +22,10 @@
 //! 8. polygons: a concave star (non-zero rule) and a self-intersecting
 //!    pentagram (even-odd rule, so its centre stays empty).
 
-// Each includer uses a different part of this file.
+// The scene is a sequence of display-list commands
+// ([`for_each_command`]): `firmware` draws them one after the other on a
+// whole framebuffer, `firmware_bands` records them in a display list and
+// renders it in bands. Each includer uses a different part of this file.
 #![allow(dead_code)]
 
 use embedded_graphics_core::{
@@ -33,6 +36,7 @@ use embedded_graphics_core::{
     Drawable,
 };
 use embedded_raster::{
+    band::Command,
     framebuffer::{buffer_size, Rgb565Le},
     FillRule, Framebuffer, Line, Polygon, Polyline, Triangle, Vertex,
 };
@@ -209,30 +213,69 @@ pub fn draw_mesh<D: DrawTarget<Color = Rgb565>>(target: &mut D) -> Result<(), D:
     for_each_mesh_triangle(|t, color| t.fill(color).draw(target))
 }
 
-/// Draws the whole built-in scene (see the file's docs).
-pub fn draw_scene<D: DrawTarget<Color = Rgb565>>(target: &mut D) -> Result<(), D::Error> {
+/// A command of the scene; polygons hold up to 12 vertices.
+pub type SceneCommand<'a> = Command<'a, Rgb565, 12>;
+
+/// The vertex and point arrays the scene's polygons and polyline borrow.
+pub struct SceneShapes {
+    star: [Vertex; 12],
+    pentagram: [Vertex; 5],
+    polyline: [Point; 5],
+}
+
+impl SceneShapes {
+    /// The scene's shapes.
+    pub fn new() -> Self {
+        Self {
+            star: star((60, 60), 50, 22),
+            pentagram: pentagram((250, 185), 45),
+            polyline: [
+                Point::new(5, 235),
+                Point::new(60, 190),
+                Point::new(90, 232),
+                Point::new(140, 200),
+                Point::new(160, 236),
+            ],
+        }
+    }
+}
+
+/// Calls `f` with each command of the built-in scene, in drawing order
+/// (see the file's docs).
+pub fn for_each_command<'a, E>(
+    shapes: &'a SceneShapes,
+    mut f: impl FnMut(SceneCommand<'a>) -> Result<(), E>,
+) -> Result<(), E> {
     // 1. Clear and rectangles.
-    target.clear(Rgb565::new(2, 5, 8))?;
+    f(Command::Clear(Rgb565::new(2, 5, 8)))?;
     let rect = |x: i32, y: i32, w: u32, h: u32| Rectangle::new(Point::new(x, y), Size::new(w, h));
-    target.fill_solid(&rect(4, 4, 150, 100), Rgb565::new(6, 12, 20))?;
-    target.fill_solid(&rect(-20, 180, 70, 90), Rgb565::new(28, 40, 4))?;
-    target.fill_solid(&rect(300, 100, 40, 10), Rgb565::new(31, 0, 31))?;
-    target.fill_solid(&rect(400, 10, 10, 10), Rgb565::new(31, 63, 31))?;
+    f(Command::Rect(rect(4, 4, 150, 100), Rgb565::new(6, 12, 20)))?;
+    f(Command::Rect(
+        rect(-20, 180, 70, 90),
+        Rgb565::new(28, 40, 4),
+    ))?;
+    f(Command::Rect(
+        rect(300, 100, 40, 10),
+        Rgb565::new(31, 0, 31),
+    ))?;
+    f(Command::Rect(
+        rect(400, 10, 10, 10),
+        Rgb565::new(31, 63, 31),
+    ))?;
 
     // 2. The 64-bit path.
-    HUGE.fill(Rgb565::new(4, 20, 10)).draw(target)?;
+    f(Command::Triangle(HUGE.fill(Rgb565::new(4, 20, 10))))?;
 
     // 3. A large triangle at fractional coordinates (raw 1/4096 units).
-    Triangle::new(
+    let large = Triangle::new(
         Vertex::from_raw(10 * 4096 + 1234, 20 * 4096 + 77),
         Vertex::from_raw(150 * 4096 + 2048, 60 * 4096 + 3001),
         Vertex::from_raw(40 * 4096 + 5, 230 * 4096 + 4095),
-    )
-    .fill(Rgb565::new(31, 30, 2))
-    .draw(target)?;
+    );
+    f(Command::Triangle(large.fill(Rgb565::new(31, 30, 2))))?;
 
     // 4. The shared-edge mesh.
-    draw_mesh(target)?;
+    for_each_mesh_triangle(|t, color| f(Command::Triangle(t.fill(color))))?;
 
     // 5. A fan of medium triangles around (80, 170).
     let fan = [
@@ -251,9 +294,9 @@ pub fn draw_scene<D: DrawTarget<Color = Rgb565>>(target: &mut D) -> Result<(), D
         let (x0, y0) = fan[k];
         let (x1, y1) = fan[(k + 1) % fan.len()];
         let p = |x: i32, y: i32| Vertex::from_raw((80 + x) * 4096, (170 + y) * 4096 + 512);
-        Triangle::new(centre, p(x0, y0), p(x1, y1))
-            .fill(rng.color())
-            .draw(target)?;
+        f(Command::Triangle(
+            Triangle::new(centre, p(x0, y0), p(x1, y1)).fill(rng.color()),
+        ))?;
     }
 
     // 6. Small and sub-pixel triangles: a 14 x 10 grid of 10 px cells, the
@@ -267,25 +310,28 @@ pub fn draw_scene<D: DrawTarget<Color = Rgb565>>(target: &mut D) -> Result<(), D
                 let (x, y) = v.raw();
                 *v = Vertex::from_raw(x + ox, y + oy);
             }
-            t.fill(rng.color()).draw(target)?;
+            f(Command::Triangle(t.fill(rng.color())))?;
         }
     }
 
     // 7. Lines.
-    draw_lines(target, &mut rng)?;
+    for_each_line_command(shapes, &mut rng, &mut f)?;
 
-    // 8. Polygons.
-    let star = star((60, 60), 50, 22);
-    Polygon::<12>::new(&star)
-        .expect("12 vertices")
-        .fill(Rgb565::new(31, 45, 10))
-        .draw(target)?;
-    let pentagram = pentagram((250, 185), 45);
-    Polygon::<5>::new(&pentagram)
-        .expect("5 vertices")
-        .fill(Rgb565::new(10, 60, 31))
-        .with_rule(FillRule::EvenOdd)
-        .draw(target)
+    // 8. Polygons (their vertex counts are within the capacity).
+    if let Ok(star) = Polygon::<12>::new(&shapes.star) {
+        f(Command::Polygon(star.fill(Rgb565::new(31, 45, 10))))?;
+    }
+    if let Ok(pentagram) = Polygon::<12>::new(&shapes.pentagram) {
+        let filled = pentagram.fill(Rgb565::new(10, 60, 31));
+        f(Command::Polygon(filled.with_rule(FillRule::EvenOdd)))?;
+    }
+    Ok(())
+}
+
+/// Draws the whole built-in scene, command by command.
+pub fn draw_scene<D: DrawTarget<Color = Rgb565>>(target: &mut D) -> Result<(), D::Error> {
+    let shapes = SceneShapes::new();
+    for_each_command(&shapes, |command| command.draw(target))
 }
 
 /// Unit vectors every 30 degrees, times 4096 (so `r` px along one is `r`
@@ -345,47 +391,46 @@ pub const FAR_LINE: Line = Line::new(
     Point::new(2_000_158, 666_787),
 );
 
-/// The lines of the scene (step 7 of [`draw_scene`]).
-pub fn draw_lines<D: DrawTarget<Color = Rgb565>>(
-    target: &mut D,
+/// The lines of the scene (step 7 of [`for_each_command`]).
+fn for_each_line_command<'a, E>(
+    shapes: &'a SceneShapes,
     rng: &mut Rng,
-) -> Result<(), D::Error> {
+    f: &mut impl FnMut(SceneCommand<'a>) -> Result<(), E>,
+) -> Result<(), E> {
     // A star of 1-pixel lines around (250, 180), through every octant.
     let centre = Point::new(250, 180);
     for k in 0..24 {
         let (dx, dy) = (rng.signed(60), rng.signed(55));
         let end = centre + Point::new(dx, dy + k % 3);
-        Line::new(centre, end).stroke(rng.color()).draw(target)?;
+        f(Command::Line(Line::new(centre, end).stroke(rng.color())))?;
     }
     // Ends far off-screen: only the visible pixels are stepped.
-    FAR_LINE.stroke(Rgb565::new(31, 63, 0)).draw(target)?;
-    Line::new(Point::new(i32::MIN, 239), Point::new(i32::MAX, 0))
-        .stroke(Rgb565::new(0, 63, 31))
-        .draw(target)?;
+    f(Command::Line(FAR_LINE.stroke(Rgb565::new(31, 63, 0))))?;
+    let across = Line::new(Point::new(i32::MIN, 239), Point::new(i32::MAX, 0));
+    f(Command::Line(across.stroke(Rgb565::new(0, 63, 31))))?;
     // Thick lines.
     for (k, width) in [2u32, 3, 5, 8].into_iter().enumerate() {
         let y = 110 + 12 * k as i32;
-        Line::new(Point::new(10, y), Point::new(150, y + 25 - 10 * k as i32))
-            .stroke(rng.color())
-            .stroke_width(width)
-            .draw(target)?;
+        let line = Line::new(Point::new(10, y), Point::new(150, y + 25 - 10 * k as i32));
+        f(Command::Line(line.stroke(rng.color()).stroke_width(width)))?;
     }
     // A polyline.
-    let points = [
-        Point::new(5, 235),
-        Point::new(60, 190),
-        Point::new(90, 232),
-        Point::new(140, 200),
-        Point::new(160, 236),
-    ];
-    Polyline::new(&points)
-        .stroke(Rgb565::new(31, 20, 0))
-        .draw(target)
+    let polyline = Polyline::new(&shapes.polyline).stroke(Rgb565::new(31, 20, 0));
+    f(Command::Polyline(polyline))
 }
 
 /// FNV-1a, 32 bits, of `bytes`.
 pub fn fnv1a32(bytes: &[u8]) -> u32 {
-    bytes.iter().fold(0x811c_9dc5, |hash, &b| {
+    fnv1a32_more(FNV1A32_START, bytes)
+}
+
+/// The FNV-1a hash of no bytes.
+pub const FNV1A32_START: u32 = 0x811c_9dc5;
+
+/// The FNV-1a hash of the bytes hashed into `hash` followed by `bytes`:
+/// a frame's checksum from its bands, in order.
+pub fn fnv1a32_more(hash: u32, bytes: &[u8]) -> u32 {
+    bytes.iter().fold(hash, |hash, &b| {
         (hash ^ u32::from(b)).wrapping_mul(0x0100_0193)
     })
 }

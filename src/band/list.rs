@@ -137,6 +137,66 @@ impl<C: Copy, const P: usize> Command<'_, C, P> {
     }
 }
 
+impl<C: ShadeColor, const P: usize> Command<'_, C, P> {
+    /// Draws the command on `target`, with `depth` for a depth-tested one
+    /// (skipped without).
+    fn draw_on<T>(
+        &self,
+        target: &mut T,
+        depth: Option<DepthBuffer<'_>>,
+    ) -> Result<(), <T as DrawTarget>::Error>
+    where
+        T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error>,
+    {
+        match self {
+            Command::Clear(color) => DrawTarget::clear(target, *color),
+            Command::Rect(area, color) => match clip_rect(area, &SpanSink::bounds(target)) {
+                Some(visible) => target.fill_rect(&visible, *color),
+                None => Ok(()),
+            },
+            Command::Triangle(t) => t.draw_spans(target),
+            Command::TriangleVariant(t) => t.draw_spans(target),
+            Command::Gouraud(t) => t.draw(target),
+            Command::DepthTriangle(t, z) => match depth {
+                Some(depth) => t.with_depth(*z, depth).draw(target),
+                None => Ok(()),
+            },
+            Command::DepthGouraud(t, z) => match depth {
+                Some(depth) => t.with_depth(*z, depth).draw(target),
+                None => Ok(()),
+            },
+            Command::Line(l) => l.draw_spans(target),
+            Command::Polyline(p) => p.draw_spans(target),
+            Command::Polygon(p) => p.draw_spans(target),
+        }
+    }
+}
+
+/// One command drawn on any `DrawTarget` (a depth-tested one draws
+/// nothing: it needs a depth buffer, see
+/// [`DisplayList::draw_with_depth`]).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+/// use embedded_raster::band::Command;
+///
+/// let mut display = MockDisplay::new();
+/// let rect = Rectangle::new(Point::new(1, 0), Size::new(2, 1));
+/// Command::<'_, BinaryColor>::Rect(rect, BinaryColor::On).draw(&mut display)?;
+/// display.assert_pattern(&[" ##"]);
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+impl<C: ShadeColor, const P: usize> Drawable for Command<'_, C, P> {
+    type Color = C;
+    type Output = ();
+
+    fn draw<D: DrawTarget<Color = C>>(&self, target: &mut D) -> Result<(), D::Error> {
+        self.draw_on(&mut DrawTargetSink::new(target), None)
+    }
+}
+
 /// A [`DisplayList`] had no room for another command: nothing was added,
 /// and everything already in it stays.
 ///
@@ -362,30 +422,7 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
             if entry.rows.start >= rows.end || rows.start >= entry.rows.end {
                 continue;
             }
-            match &entry.command {
-                Command::Clear(color) => DrawTarget::clear(target, *color)?,
-                Command::Rect(area, color) => {
-                    if let Some(visible) = clip_rect(area, &SpanSink::bounds(target)) {
-                        target.fill_rect(&visible, *color)?;
-                    }
-                }
-                Command::Triangle(t) => t.draw_spans(target)?,
-                Command::TriangleVariant(t) => t.draw_spans(target)?,
-                Command::Gouraud(t) => t.draw(target)?,
-                Command::DepthTriangle(t, z) => {
-                    if let Some(depth) = depth {
-                        t.with_depth(*z, depth).draw(target)?;
-                    }
-                }
-                Command::DepthGouraud(t, z) => {
-                    if let Some(depth) = depth {
-                        t.with_depth(*z, depth).draw(target)?;
-                    }
-                }
-                Command::Line(l) => l.draw_spans(target)?,
-                Command::Polyline(p) => p.draw_spans(target)?,
-                Command::Polygon(p) => p.draw_spans(target)?,
-            }
+            entry.command.draw_on(target, depth)?;
         }
         Ok(())
     }
