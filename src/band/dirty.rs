@@ -58,7 +58,7 @@ impl<T: OriginDimensions, const H: usize> DirtyRows<T, H> {
     /// let screen = DirtyRows::<_, 4>::new(fb);
     /// assert_eq!(screen.changed().count(), 0);
     /// ```
-    pub fn new(target: T) -> Self {
+    pub const fn new(target: T) -> Self {
         Self {
             target,
             rows: [(u32::MAX, 0); H],
