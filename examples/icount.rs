@@ -45,8 +45,10 @@ mod target {
         Drawable, Pixel,
     };
     use embedded_raster::{
-        FillRule, Line, Polygon, Span, SpanDrawable, StyledLine, Triangle, TriangleAlgorithm,
-        Vertex,
+        band::DisplayList,
+        framebuffer::{buffer_size, Rgb565Le},
+        FillRule, Framebuffer, Line, Polygon, Span, SpanDrawable, StyledLine, Triangle,
+        TriangleAlgorithm, Vertex,
     };
 
     use super::builtin_scene::{self, SceneBuffer, HUGE, SCREEN, TWIN};
@@ -320,6 +322,26 @@ mod target {
         );
     }
 
+    /// The built-in scene as a display list.
+    type SceneList<'a> = DisplayList<'a, Rgb565, 288, 12>;
+
+    /// A band buffer of `R` rows.
+    type Band<const R: usize, const N: usize> = Framebuffer<Rgb565Le, 320, R, N>;
+
+    /// Counts rendering `list` in bands of `buffer`'s rows; prints a row.
+    fn bands_row<const R: usize, const N: usize>(
+        counter: &mut Counter,
+        list: &SceneList<'_>,
+        buffer: &mut Band<R, N>,
+    ) {
+        let buffers = core::slice::from_mut(buffer);
+        let instructions = counter.count(|| {
+            let mut nowhere = |_: &Band<R, N>, _: Rectangle| Ok::<(), ()>(());
+            let _ = list.render_bands(240, &mut *buffers, None, &mut nowhere);
+        });
+        hprintln!("bands\tbands of {}\t{}\t{}\t{}", R, R, N, instructions);
+    }
+
     /// `count` (at most 64) irregular triangles of `size` px tiled over
     /// the screen, as in the host benchmark.
     fn tiles(size: i32, count: usize, out: &mut [(Triangle, Rgb565); 64]) -> usize {
@@ -341,6 +363,11 @@ mod target {
         // cortex-m-rt turns these into `&'static mut` (in .bss): no unsafe.
         static mut FB: SceneBuffer = SceneBuffer::new();
         static mut RECTS: [Rectangle; 8192] = [Rectangle::zero(); 8192];
+        static mut LIST: SceneList<'static> = SceneList::new();
+        static mut SHAPES: Option<builtin_scene::SceneShapes> = None;
+        static mut BAND16: Band<16, { buffer_size::<Rgb565Le>(320, 16) }> = Band::new();
+        static mut BAND8: Band<8, { buffer_size::<Rgb565Le>(320, 8) }> = Band::new();
+        static mut BAND1: Band<1, { buffer_size::<Rgb565Le>(320, 1) }> = Band::new();
         let peripherals = cortex_m::Peripherals::take().expect("peripherals");
         let mut counter = Counter::new(peripherals.SYST);
         validate(&mut counter);
@@ -473,6 +500,22 @@ mod target {
         let batch = Batch::Polygons(&[(&pentagram, FillRule::EvenOdd)]);
         let label = "pentagram 220 px, even-odd";
         row(&mut counter, FB, RECTS, "polygons", label, batch, false);
+
+        // The built-in scene from a display list: the whole frame, then
+        // bands of 16, 8 and 1 rows (the finished bands go nowhere).
+        let shapes: &'static builtin_scene::SceneShapes =
+            SHAPES.insert(builtin_scene::SceneShapes::new());
+        if builtin_scene::for_each_command(shapes, |c| LIST.push(c)).is_err() {
+            panic!("the scene does not fit the list");
+        }
+        let list: &SceneList<'static> = LIST;
+        let whole = counter.count(|| {
+            let Ok(()) = list.draw_with_depth(&mut *FB, None);
+        });
+        hprintln!("bands\twhole frame\t240\t{}\t{}", 320 * 240 * 2, whole);
+        bands_row(&mut counter, list, BAND16);
+        bands_row(&mut counter, list, BAND8);
+        bands_row(&mut counter, list, BAND1);
 
         hprintln!("done");
         super::semihosting::exit_success()
