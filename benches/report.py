@@ -54,6 +54,23 @@ def result(group, peer):
     return median, elements, int(count) if count.isdigit() else 1
 
 
+if BENCH == "bands":
+    # Time relative to the whole frame, per scene, and the pixel memory.
+    print("| rows per band | pixel buffer (320 px wide, Rgb565) | demo scene: time ÷ whole frame | mesh scene: time ÷ whole frame |")
+    print("|---|---|---|---|")
+    whole = {n: result(f"bands {n}", "whole frame") for n in ["demo", "mesh"]}
+    for rows in [1, 8, 16, 32, 240]:
+        cells = []
+        for n in ["demo", "mesh"]:
+            r = result(f"bands {n}", "whole frame") if rows == 240 else result(f"bands {n}", "bands")
+            if rows != 240:
+                d = ROOT / f"bands {n}" / "bands" / str(rows) / "new" / "estimates.json"
+                r = (json.loads(d.read_text())["median"]["point_estimate"],) if d.exists() else None
+            cells.append("-" if r is None else f"{r[0] / whole[n][0]:.2f}x")
+        label = "240 (whole frame)" if rows == 240 else str(rows)
+        print(f"| {label} | {320 * rows * 2:,} B | " + " | ".join(cells) + " |")
+    print(f"\nWhole frame: demo {whole['demo'][0] / 1e3:.1f} µs, mesh {whole['mesh'][0] / 1e3:.1f} µs per frame.")
+    sys.exit(0)
 if BENCH == "framebuffer":
     # embedded-graphics drawing on both framebuffers; "null" stores nothing.
     print("| drawing | embedded-raster µs | embedded-graphics µs | no stores µs | embedded-graphics time ÷ embedded-raster time |")

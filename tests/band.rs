@@ -140,10 +140,30 @@ fn whole(list: &DisplayList<'_, Rgb888, 64, 16>) -> SimDisplay<Rgb888> {
 
 /// The list rendered in bands of `rows` rows through `buffers` buffers,
 /// each band's pixels and write counts copied into a whole-screen image.
+/// How a list is rendered in bands.
+#[derive(Debug, Clone, Copy)]
+enum Mode {
+    /// `DisplayList::render_bands`: triangles set up once, continued from
+    /// band to band.
+    Resuming,
+    /// `render_in_bands` with `DisplayList::draw_band`: every command set
+    /// up again in each band it meets.
+    EachBand,
+}
+
 fn banded(
     list: &DisplayList<'_, Rgb888, 64, 16>,
     rows: u32,
     buffers: usize,
+) -> (Vec<Rgb888>, Vec<u32>) {
+    banded_by(list, rows, buffers, Mode::Resuming)
+}
+
+fn banded_by(
+    list: &DisplayList<'_, Rgb888, 64, 16>,
+    rows: u32,
+    buffers: usize,
+    mode: Mode,
 ) -> (Vec<Rgb888>, Vec<u32>) {
     let mut pixels = vec![Rgb888::BLACK; (W * H) as usize];
     let mut counts = vec![0u32; (W * H) as usize];
@@ -156,37 +176,41 @@ fn banded(
     let mut next = 0;
     let mut depth = vec![0u16; (W * rows) as usize];
     let mut bands = 0;
-    render_in_bands(
-        H,
-        &mut bufs,
-        Some(&mut depth),
-        |band, depth| list.draw_band(band, depth),
-        &mut |buffer: &SimDisplay<Rgb888>, area: Rectangle| {
-            assert_eq!(area.size.width, W);
-            for r in 0..area.size.height as i32 {
-                for x in 0..W as i32 {
-                    let local = Point::new(x, r);
-                    let i = (r as u32 * W + x as u32) as usize;
-                    let screen = ((area.top_left.y + r) as u32 * W + x as u32) as usize;
-                    let total = buffer.write_count(local).unwrap();
-                    counts[screen] = total - seen[next][i];
-                    seen[next][i] = total;
-                    pixels[screen] = buffer.pixel(local).unwrap();
-                }
+    let mut output = |buffer: &SimDisplay<Rgb888>, area: Rectangle| {
+        assert_eq!(area.size.width, W);
+        for r in 0..area.size.height as i32 {
+            for x in 0..W as i32 {
+                let local = Point::new(x, r);
+                let i = (r as u32 * W + x as u32) as usize;
+                let screen = ((area.top_left.y + r) as u32 * W + x as u32) as usize;
+                let total = buffer.write_count(local).unwrap();
+                counts[screen] = total - seen[next][i];
+                seen[next][i] = total;
+                pixels[screen] = buffer.pixel(local).unwrap();
             }
-            // Rows of the buffer below the screen are never written.
-            for r in area.size.height as i32..rows as i32 {
-                for x in 0..W as i32 {
-                    let i = (r as u32 * W + x as u32) as usize;
-                    assert_eq!(buffer.write_count(Point::new(x, r)).unwrap(), seen[next][i]);
-                }
+        }
+        // Rows of the buffer below the screen are never written.
+        for r in area.size.height as i32..rows as i32 {
+            for x in 0..W as i32 {
+                let i = (r as u32 * W + x as u32) as usize;
+                assert_eq!(buffer.write_count(Point::new(x, r)).unwrap(), seen[next][i]);
             }
-            assert_eq!(buffer.out_of_bounds_writes(), 0);
-            next = (next + 1) % buffers;
-            bands += 1;
-            Ok::<(), ()>(())
-        },
-    )
+        }
+        assert_eq!(buffer.out_of_bounds_writes(), 0);
+        next = (next + 1) % buffers;
+        bands += 1;
+        Ok::<(), ()>(())
+    };
+    match mode {
+        Mode::Resuming => list.render_bands(H, &mut bufs, Some(&mut depth), &mut output),
+        Mode::EachBand => render_in_bands(
+            H,
+            &mut bufs,
+            Some(&mut depth),
+            |band, depth| list.draw_band(band, depth),
+            &mut output,
+        ),
+    }
     .unwrap();
     assert_eq!(bands, H.div_ceil(rows));
     (pixels, counts)
@@ -203,16 +227,15 @@ fn check(seed: u64) {
         .map(|p| reference.write_count(p).unwrap())
         .collect();
     for rows in [1, 2, 3, 7, 8, 16, 28, 29, 240] {
-        for buffers in [1, 2] {
-            let (pixels, counts) = banded(&list, rows, buffers);
-            assert!(
-                pixels == want_pixels,
-                "pixels differ, bands of {rows}, seed {seed}"
-            );
-            assert!(
-                counts == want_counts,
-                "counts differ, bands of {rows}, seed {seed}"
-            );
+        for (buffers, mode) in [
+            (1, Mode::Resuming),
+            (2, Mode::Resuming),
+            (1, Mode::EachBand),
+        ] {
+            let (pixels, counts) = banded_by(&list, rows, buffers, mode);
+            let what = format!("bands of {rows}, {buffers} buffers, {mode:?}, seed {seed}");
+            assert!(pixels == want_pixels, "pixels differ: {what}");
+            assert!(counts == want_counts, "counts differ: {what}");
         }
     }
 }

@@ -4,8 +4,11 @@
 use core::{fmt, ops::Range};
 
 use embedded_graphics_core::{
-    draw_target::DrawTarget, geometry::OriginDimensions, pixelcolor::PixelColor,
-    primitives::Rectangle, Drawable,
+    draw_target::DrawTarget,
+    geometry::{OriginDimensions, Point, Size},
+    pixelcolor::PixelColor,
+    primitives::Rectangle,
+    Drawable,
 };
 
 use super::{render_in_bands, Band, BandOutput, RenderError};
@@ -15,7 +18,7 @@ use crate::{
     polygon::FilledPolygon,
     raster::sink::{DrawTargetSink, SpanDrawable, SpanSink},
     shade::{DepthBuffer, GouraudTriangle, ShadeColor},
-    triangle::{FilledTriangle, FilledTriangleVariant},
+    triangle::{fill::TriangleRows, FilledTriangle, FilledTriangleVariant},
     vertex::Vertex,
 };
 
@@ -531,13 +534,121 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
         T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error> + OriginDimensions,
         O: BandOutput<T>,
     {
+        let width = buffers.first().map_or(0, |b| b.size().width);
+        let screen = Rectangle::new(Point::zero(), Size::new(width, height));
+        let mut walks = Walks::<N>::new();
         render_in_bands(
             height,
             buffers,
             depth,
-            |band, depth| self.draw_band(band, depth),
+            |band, depth| self.draw_band_resuming(band, depth, &screen, &mut walks),
             output,
         )
+    }
+
+    /// Draws the commands meeting `band`'s rows, like
+    /// [`draw_band`](Self::draw_band), but continues the triangles set up
+    /// in an earlier band from where they stopped and keeps the walks of
+    /// those set up here that go on below, while there is room (else later
+    /// bands draw them whole, clipped to their rows). Bands must come top
+    /// to bottom.
+    fn draw_band_resuming<T>(
+        &self,
+        band: &mut Band<'_, T>,
+        depth: Option<DepthBuffer<'_>>,
+        screen: &Rectangle,
+        walks: &mut Walks<N>,
+    ) -> Result<(), <T as DrawTarget>::Error>
+    where
+        T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error> + OriginDimensions,
+    {
+        let rows = band.rows();
+        for (index, entry) in self.entries.iter().enumerate() {
+            if entry.rows.start >= rows.end || rows.start >= entry.rows.end {
+                continue;
+            }
+            let Command::Triangle(t) = &entry.command else {
+                entry.command.draw_on(band, depth)?;
+                continue;
+            };
+            let color = t.color;
+            let mut emit = |span| band.fill_span(span, color);
+            if let Some(walk) = walks.of(index) {
+                // Set up in an earlier band: continue.
+                if walk.emit_until(rows.end, &mut emit)? {
+                    walks.finish(index);
+                }
+                continue;
+            }
+            // The first band the command meets sets it up.
+            let first = entry.rows.start >= rows.start || rows.start == 0;
+            match first.then(|| TriangleRows::new(&t.triangle.vertices, screen)) {
+                Some(Some(mut walk)) => {
+                    if !walk.emit_until(rows.end, &mut emit)? {
+                        walks.keep(index, walk);
+                    }
+                }
+                // Nothing to light, on the 64-bit path, or not kept.
+                _ => t.draw_spans(band)?,
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The most triangle walks kept from one band to the next.
+const WALKS: usize = 32;
+
+/// Triangle walks kept between bands, found by command index: slots
+/// that do not move (a walk is about 120 bytes), a slot number per
+/// command, and the free slots.
+struct Walks<const N: usize> {
+    /// Per command, its slot plus one, or 0.
+    slot_of: [u8; N],
+    slots: [Option<TriangleRows>; WALKS],
+    free: heapless::Vec<u8, WALKS>,
+}
+
+impl<const N: usize> Walks<N> {
+    fn new() -> Self {
+        Self {
+            slot_of: [0; N],
+            slots: [const { None }; WALKS],
+            // Slots 0..WALKS, all free: `WALKS` fits the vector and `u8`.
+            free: (0..WALKS as u8).rev().collect(),
+        }
+    }
+
+    /// The walk of command `index`, if one is kept.
+    fn of(&mut self, index: usize) -> Option<&mut TriangleRows> {
+        let slot = usize::from(*self.slot_of.get(index)?).checked_sub(1)?;
+        self.slots.get_mut(slot)?.as_mut()
+    }
+
+    /// Keeps `walk` for command `index`, if a slot is free.
+    fn keep(&mut self, index: usize, walk: TriangleRows) {
+        if let (Some(mark), Some(&slot)) = (self.slot_of.get_mut(index), self.free.last()) {
+            if let Some(place) = self.slots.get_mut(usize::from(slot)) {
+                *place = Some(walk);
+                *mark = slot + 1;
+                self.free.pop();
+            }
+        }
+    }
+
+    /// Drops the walk of command `index`, freeing its slot.
+    fn finish(&mut self, index: usize) {
+        let Some(mark) = self.slot_of.get_mut(index) else {
+            return;
+        };
+        if let Some(slot) = mark.checked_sub(1) {
+            if let Some(place) = self.slots.get_mut(usize::from(slot)) {
+                *place = None;
+                // A slot taken from `free` goes back: there is room.
+                let _ = self.free.push(slot);
+            }
+        }
+        *mark = 0;
     }
 }
 

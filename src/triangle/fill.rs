@@ -52,6 +52,95 @@ pub(crate) fn triangle_spans<E>(
     }
 }
 
+/// A triangle's rows inside a clip, walked a window of rows at a time:
+/// the edges are set up once, and each window continues where the last
+/// one stopped, so a triangle drawn band by band costs what it costs
+/// drawn whole. The same spans as [`triangle_spans`] (the same edges, the
+/// same [`rows`] loop); only triangles on the 32-bit path are kept, the
+/// rest are drawn whole in each window by [`triangle_spans`].
+#[derive(Debug, Clone)]
+pub(crate) struct TriangleRows {
+    frame: Frame,
+    long: Edge<i32>,
+    /// The short edges still to walk: the upper one first.
+    upper: Option<Edge<i32>>,
+    lower: Option<Edge<i32>>,
+    short_left: bool,
+    /// The next row to emit, relative to the frame.
+    row: i32,
+}
+
+impl TriangleRows {
+    /// Sets up the walk of `vertices` inside `clip`, or `None` if the
+    /// triangle lights nothing there or needs the 64-bit path.
+    pub(crate) fn new(vertices: &[Vertex; 3], clip: &Rectangle) -> Option<Self> {
+        let frame = Frame::around(vertices, clip)?;
+        let mut v = *vertices;
+        sort_by_y(&mut v);
+        let p = relative::<i32>(&frame, &v)?;
+        let turn = orientation(p[0], p[1], p[2]);
+        if turn == 0 {
+            return None;
+        }
+        Some(Self {
+            long: Edge::new(p[0], p[2], 0)?,
+            upper: Edge::new(p[0], p[1], 0),
+            lower: Edge::new(p[1], p[2], 0),
+            short_left: turn < 0,
+            row: 0,
+            frame,
+        })
+    }
+
+    /// Emits the triangle's spans on the rows above `until` (absolute)
+    /// not emitted yet, top to bottom; `true` once every row is done.
+    pub(crate) fn emit_until<E>(
+        &mut self,
+        until: i32,
+        emit: &mut impl FnMut(Span) -> Result<(), E>,
+    ) -> Result<bool, E> {
+        let frame = &self.frame;
+        let last = frame.height - 1;
+        // The last row of this window, relative to the frame.
+        let stop = (i64::from(until) - i64::from(frame.origin.y) - 1).min(i64::from(last));
+        loop {
+            let (short, upper) = match (&mut self.upper, &mut self.lower) {
+                (Some(short), _) => (short, true),
+                (None, Some(short)) => (short, false),
+                (None, None) => return Ok(true),
+            };
+            let from = self.row.max(short.first_row);
+            let half_end = short.last_row.min(last);
+            // `stop` is below `last`, an `i32`.
+            let end = half_end.min(stop as i32);
+            if from > end {
+                return Ok(false);
+            }
+            match self.short_left {
+                true => rows(frame, short, &mut self.long, from, end, emit)?,
+                false => rows(frame, &mut self.long, short, from, end, emit)?,
+            }
+            self.row = end + 1;
+            if end < half_end {
+                // Both edges move on to the window's next row.
+                short.step();
+                self.long.step();
+                return Ok(false);
+            }
+            // This half is done; the other starts on the next row.
+            match upper {
+                true => self.upper = None,
+                false => self.lower = None,
+            }
+            if end == last {
+                (self.upper, self.lower) = (None, None);
+                return Ok(true);
+            }
+            self.long.step();
+        }
+    }
+}
+
 /// The vertices relative to the frame, in `T` if they fit its bound.
 #[inline(always)]
 fn relative<T: Wide>(frame: &Frame, v: &[Vertex; 3]) -> Option<[(T, T); 3]> {

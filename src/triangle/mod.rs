@@ -1,6 +1,6 @@
 //! Filled triangles.
 
-mod fill;
+pub(crate) mod fill;
 mod variants;
 
 pub use variants::{SubpixelPrecision, TriangleAlgorithm};
