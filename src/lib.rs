@@ -101,6 +101,7 @@ pub mod shade;
 #[cfg(feature = "sim")]
 pub mod sim;
 mod span;
+mod stroke;
 mod triangle;
 mod vertex;
 
@@ -116,11 +117,13 @@ pub use line::{
     Line, LineAlgorithm, Polyline, Run, StyledLine, StyledLineVariant, StyledPolyline,
     StyledPolylineVariant,
 };
-pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError};
+pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError, StrokedPolygon};
 pub use raster::sink::{DrawTargetSink, SpanDrawable, SpanSink};
 pub use shade::GouraudTriangle;
 pub use span::Span;
+pub use stroke::{Join, MITER_LIMIT};
 pub use triangle::{
-    FilledTriangle, FilledTriangleVariant, SubpixelPrecision, Triangle, TriangleAlgorithm,
+    FilledTriangle, FilledTriangleVariant, StrokedTriangle, SubpixelPrecision, Triangle,
+    TriangleAlgorithm,
 };
 pub use vertex::{ParseCoordinateError, Vertex, SUBPIXEL_BITS};

@@ -1,0 +1,235 @@
+//! The convex pieces a stroke is the union of: one parallelogram per
+//! segment and, at each joint, the join's triangles or disk sector.
+//!
+//! ```text
+//!            u0 = s n0          outer side of the turn
+//!      c0 +-----------+ M       (M: the miter tip, Join::Miter)
+//!         |  bevel  /  \
+//!  seg 0  |       /  tip\
+//!  -------P-----/--------+ c1 = P + s n1
+//!         |   seg 1
+//! ```
+//!
+//! A segment from `a` to `b` with direction `d` has the offsets
+//!
+//! ```text
+//! n = (-d.y, d.x) w / (2 |d|),   e = d / (2 |d|)   (half a pixel along d)
+//! ```
+//!
+//! each component rounded to the nearest raw unit (exactly, with an
+//! integer square root, as thick lines do), and its piece is the
+//! parallelogram `a + n, b + n, b - n, a - n`; the ends of an open
+//! stroke are moved out by `e` (butt caps half a pixel beyond the end
+//! pixels' centres). Consecutive pieces share the corners `P + n` and
+//! `P - n` exactly, so they meet along the line through the joint `P`.
+//!
+//! **Which side is outside.** Near `P`, segment 0's piece is the half-plane
+//! behind the line through `P` along `n0` and segment 1's the half-plane
+//! ahead of the line along `n1`; what they leave uncovered is the cone
+//! between the rays `s n0` and `s n1` with `s = -sign(cross(n0, n1))`
+//! (since `cross(n, d) < 0` for every segment, rounding included). It is
+//! decided on the rounded offsets themselves, so the join fills exactly
+//! the cone the pieces leave, however close to straight or to a reversal
+//! the turn is. Parallel offsets leave nothing (a straight joint) or, in
+//! the opposite direction (a full reversal), the half-plane ahead.
+
+use super::{Join, MITER_LIMIT};
+
+/// A point in raw 20.12 units.
+pub(crate) type Pt = (i128, i128);
+
+fn cross(u: Pt, v: Pt) -> i128 {
+    u.0 * v.1 - u.1 * v.0
+}
+
+fn add(u: Pt, v: Pt) -> Pt {
+    (u.0 + v.0, u.1 + v.1)
+}
+
+fn sub(u: Pt, v: Pt) -> Pt {
+    (u.0 - v.0, u.1 - v.1)
+}
+
+/// The open half-plane `o cross(d, p - a) > 0` (`o` is 1 or -1, `d` not
+/// zero).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Plane {
+    pub a: Pt,
+    pub d: Pt,
+    pub o: i128,
+}
+
+/// A convex piece: the intersection of up to four half-planes and, for a
+/// round join, a disk (centre, squared radius).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Piece {
+    planes: [Plane; 4],
+    count: usize,
+    pub disk: Option<(Pt, i128)>,
+}
+
+impl Piece {
+    /// The half-planes.
+    pub fn planes(&self) -> &[Plane] {
+        &self.planes[..self.count]
+    }
+
+    /// The convex polygon through `v` (3 or 4 vertices in order, either
+    /// winding); `None` if it has no area.
+    pub fn polygon(v: &[Pt]) -> Option<Self> {
+        let k = v.len();
+        let area: i128 = (0..k).map(|i| cross(v[i], v[(i + 1) % k])).sum();
+        let o = area.signum();
+        if o == 0 {
+            return None;
+        }
+        let mut piece = Self::empty();
+        for i in 0..k {
+            let d = sub(v[(i + 1) % k], v[i]);
+            if d != (0, 0) {
+                piece.push(Plane { a: v[i], d, o });
+            }
+        }
+        Some(piece)
+    }
+
+    /// The disk of centre `c` and squared radius `r2` cut by `planes`.
+    fn sector(c: Pt, r2: i128, planes: &[Plane]) -> Self {
+        let mut piece = Self::empty();
+        planes.iter().for_each(|&p| piece.push(p));
+        piece.disk = Some((c, r2));
+        piece
+    }
+
+    fn empty() -> Self {
+        let none = Plane {
+            a: (0, 0),
+            d: (1, 0),
+            o: 1,
+        };
+        Self {
+            planes: [none; 4],
+            count: 0,
+            disk: None,
+        }
+    }
+
+    fn push(&mut self, plane: Plane) {
+        if let Some(slot) = self.planes.get_mut(self.count) {
+            *slot = plane;
+            self.count += 1;
+        }
+    }
+}
+
+/// `round(a / sqrt(len2))` (`len2 > 0`, half up), in raw units: with `t =
+/// floor(2 a / sqrt(len2)) = isqrt(floor(4 a^2 / len2))`, the nearest
+/// integer is `ceil(t / 2)`. `a < 2^59`, so `4 a^2 < 2^120`.
+fn div_sqrt(a: u128, len2: u128) -> i128 {
+    let t = (4 * a * a / len2).isqrt();
+    i128::try_from(t.div_ceil(2)).unwrap_or_default()
+}
+
+/// `round(n / d)` for `d > 0`, half up.
+fn round_div(n: i128, d: i128) -> i128 {
+    (2 * n + d).div_euclid(2 * d)
+}
+
+/// A segment `a -> b` (raw units, `a != b`) of a stroke `w` px wide.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Segment {
+    pub a: Pt,
+    pub b: Pt,
+}
+
+impl Segment {
+    /// The offsets `(n, e)` (module docs) for width `w <= 65535`.
+    ///
+    /// Both are ratios of the direction, so it is first divided by the
+    /// largest power of two dividing both components: a direction
+    /// between pixel centres (a multiple of 4096) becomes one between
+    /// `i32` pixels, below `2^32` a component, as is any difference of
+    /// `Vertex` coordinates. Then `|d| w 2048 < 2^59`.
+    pub fn offsets(&self, w: i128) -> (Pt, Pt) {
+        let d = sub(self.b, self.a);
+        let shift = (d.0 | d.1).trailing_zeros().min(127);
+        let d = (d.0 >> shift, d.1 >> shift);
+        let len2 = (d.0 * d.0 + d.1 * d.1).unsigned_abs();
+        let scaled = |c: i128, f: i128| c.signum() * div_sqrt(c.unsigned_abs() * f as u128, len2);
+        let e = (scaled(d.0, 2048), scaled(d.1, 2048));
+        let n = (-scaled(d.1, 2048 * w), scaled(d.0, 2048 * w));
+        (n, e)
+    }
+
+    /// The segment's parallelogram with offset `n`, its start moved back
+    /// by `start` and its end forward by `end` (each `e` or zero).
+    pub fn piece(&self, n: Pt, start: Pt, end: Pt) -> Option<Piece> {
+        let (a, b) = (sub(self.a, start), add(self.b, end));
+        Piece::polygon(&[add(a, n), add(b, n), sub(b, n), sub(a, n)])
+    }
+}
+
+/// The `w x w` square around `p` that a stroke of no length draws, as a
+/// zero-length thick line does.
+pub(crate) fn square(p: Pt, w: i128) -> Option<Piece> {
+    let r = 2048 * w;
+    Piece::polygon(&[
+        (p.0 - r, p.1 + r),
+        (p.0 + r, p.1 + r),
+        (p.0 + r, p.1 - r),
+        (p.0 - r, p.1 - r),
+    ])
+}
+
+/// Calls `f` with the pieces of the join at `p` between a segment with
+/// offset `n0` and direction `d0` and the next one, with offset `n1`, for
+/// a stroke `w` px wide.
+///
+/// - Bevel: the triangle `P, P + s n0, P + s n1`.
+/// - Miter: the bevel and the tip triangle `P + s n0, M, P + s n1`, while
+///   `cos(turn) >= 2 / L^2 - 1` for `L =` [`MITER_LIMIT`] (tested on the
+///   offsets: `L^2 n0.n1 >= (2 - L^2) r^2`, `r = w / 2`), else the bevel
+///   alone. `M = P + s (n0 + n1) r^2 / (r^2 + n0.n1)`, the offset lines'
+///   crossing for exact offsets, rounded to a raw unit. Two triangles
+///   rather than one quadrilateral: the tip's rounding can never dent the
+///   bevel.
+/// - Round: the disk of radius `r` around `P`, exactly, cut to the cone
+///   between the rays `s n0` and `s n1` (after a full reversal, to the
+///   half-plane ahead of the first segment).
+pub(crate) fn join(p: Pt, n0: Pt, d0: Pt, n1: Pt, w: i128, kind: Join, f: &mut dyn FnMut(&Piece)) {
+    let r2 = (2048 * w) * (2048 * w);
+    let c = cross(n0, n1);
+    let dot = n0.0 * n1.0 + n0.1 * n1.1;
+    if c == 0 {
+        if dot < 0 && kind == Join::Round {
+            let o = cross(n0, d0).signum();
+            f(&Piece::sector(p, r2, &[Plane { a: p, d: n0, o }]));
+        }
+        return;
+    }
+    let s = -c.signum();
+    let (u0, u1) = ((s * n0.0, s * n0.1), (s * n1.0, s * n1.1));
+    let (c0, c1) = (add(p, u0), add(p, u1));
+    if kind == Join::Round {
+        // cross(u0, u1) = c: the cone is on u1's side of u0 and u0's of u1.
+        let o = c.signum();
+        let planes = [Plane { a: p, d: u0, o }, Plane { a: p, d: u1, o: -o }];
+        f(&Piece::sector(p, r2, &planes));
+        return;
+    }
+    if let Some(bevel) = Piece::polygon(&[p, c0, c1]) {
+        f(&bevel);
+    }
+    let l2 = i128::from(MITER_LIMIT) * i128::from(MITER_LIMIT);
+    if kind == Join::Miter && l2 * dot >= (2 - l2) * r2 {
+        // r^2 + n0.n1 >= 2 r^2 / L^2 > 0.
+        let den = r2 + dot;
+        let m = (
+            p.0 + round_div((u0.0 + u1.0) * r2, den),
+            p.1 + round_div((u0.1 + u1.1) * r2, den),
+        );
+        if let Some(tip) = Piece::polygon(&[c0, m, c1]) {
+            f(&tip);
+        }
+    }
+}
