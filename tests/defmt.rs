@@ -7,8 +7,8 @@
 use embedded_graphics_core::pixelcolor::{BinaryColor, Rgb565};
 use embedded_raster::{
     framebuffer::{buffer_size, BinaryMsb, Gray8Bytes, Rgb565Be, Rgb565Le, Rgb888Bytes},
-    CoordinateOutOfRange, FilledTriangle, Framebuffer, ParseCoordinateError, Span, Triangle,
-    Vertex,
+    CoordinateOutOfRange, FilledTriangle, Framebuffer, Join, ParseCoordinateError, Span,
+    StrokedTriangle, Triangle, Vertex,
 };
 
 fn implements_format<T: defmt::Format + ?Sized>() {}
@@ -19,6 +19,8 @@ fn value_types_implement_format() {
     implements_format::<Triangle>();
     implements_format::<FilledTriangle<Rgb565>>();
     implements_format::<FilledTriangle<BinaryColor>>();
+    implements_format::<StrokedTriangle<Rgb565>>();
+    implements_format::<Join>();
     implements_format::<Span>();
     implements_format::<CoordinateOutOfRange>();
     implements_format::<ParseCoordinateError>();
