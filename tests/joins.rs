@@ -320,11 +320,10 @@ proptest! {
         assert_polyline(&points, width, join);
     }
 
-    /// Many short segments in a small area: rows crossed by more than the
-    /// 16 pieces merged on the stack, merged by passes instead.
+    /// Many short segments in a small area, crossing themselves.
     #[test]
     fn crowded_polylines(
-        points in prop::collection::vec((20i32..52, 20i32..52).prop_map(|(x, y)| Point::new(x, y)), 20..48),
+        points in prop::collection::vec((20i32..52, 20i32..52).prop_map(|(x, y)| Point::new(x, y)), 20..80),
         width in 2u32..=12,
         join in any_join(),
     ) {
@@ -369,6 +368,18 @@ proptest! {
         let mut l = SimDisplay::new(SIZE, SIZE, Gray8::BLACK);
         Line::new(points[0], points[1]).stroke(Gray8::WHITE).stroke_width(width).draw(&mut l).unwrap();
         prop_assert_eq!(d.pixels(), l.pixels());
+    }
+}
+
+/// A comb whose middle rows cross over 64 pieces (more than the row
+/// buffer holds): merged by passes instead, still exact and once.
+#[test]
+fn comb_past_the_row_buffer() {
+    let points: Vec<Point> = (0..90)
+        .map(|k| Point::new(-10 + k, if k % 2 == 0 { 10 } else { 60 }))
+        .collect();
+    for (width, join) in [(2, Join::Miter), (3, Join::Round), (5, Join::Bevel)] {
+        assert_polyline(&points, width, join);
     }
 }
 

@@ -51,12 +51,13 @@ fn sub(u: Pt, v: Pt) -> Pt {
 }
 
 /// The open half-plane `o cross(d, p - a) > 0` (`o` is 1 or -1, `d` not
-/// zero).
+/// zero), in raw units: every piece's coordinates lie below `2^46` in
+/// magnitude (module `row`), so they are stored in `i64`.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Plane {
-    pub a: Pt,
-    pub d: Pt,
-    pub o: i128,
+    pub a: (i64, i64),
+    pub d: (i64, i64),
+    pub o: i8,
 }
 
 /// A convex piece: the intersection of up to four half-planes and, for a
@@ -65,7 +66,13 @@ pub(crate) struct Plane {
 pub(crate) struct Piece {
     planes: [Plane; 4],
     count: usize,
-    pub disk: Option<(Pt, i128)>,
+    pub disk: Option<((i64, i64), i64)>,
+}
+
+/// `p` in `i64`; `None` never happens for a stroke's points (below
+/// `2^46`).
+fn narrow(p: Pt) -> Option<(i64, i64)> {
+    Some((i64::try_from(p.0).ok()?, i64::try_from(p.1).ok()?))
 }
 
 impl Piece {
@@ -74,33 +81,69 @@ impl Piece {
         &self.planes[..self.count]
     }
 
-    /// The convex polygon through `v` (3 or 4 vertices in order, either
-    /// winding); `None` if it has no area.
-    pub fn polygon(v: &[Pt]) -> Option<Self> {
-        let k = v.len();
-        let area: i128 = (0..k).map(|i| cross(v[i], v[(i + 1) % k])).sum();
-        let o = area.signum();
+    /// Calls `f` with the convex polygon through `v` (3 or 4 vertices in
+    /// order, either winding), unless it has no area. (Built in place and
+    /// lent: a piece is 200 bytes, not worth copying per row.)
+    #[inline(always)]
+    pub fn polygon(v: &[Pt], f: &mut dyn FnMut(&Piece)) {
+        let mut piece = Self::empty();
+        if piece.set_polygon(v).is_some() {
+            f(&piece);
+        }
+    }
+
+    /// Makes this empty piece the polygon through `v`; `None` if it has
+    /// no area.
+    #[inline(always)]
+    fn set_polygon(&mut self, v: &[Pt]) -> Option<()> {
+        let first = *v.first()?;
+        // Twice the area, from the first vertex.
+        let area: i128 = v
+            .windows(2)
+            .skip(1)
+            .map(|w| cross(sub(w[0], first), sub(w[1], first)))
+            .sum();
+        let o = area.signum() as i8;
         if o == 0 {
             return None;
         }
-        let mut piece = Self::empty();
-        for i in 0..k {
-            let d = sub(v[(i + 1) % k], v[i]);
+        let next = v.iter().skip(1).chain(Some(&first));
+        for (&from, &to) in v.iter().zip(next) {
+            let d = sub(to, from);
             if d != (0, 0) {
-                piece.push(Plane { a: v[i], d, o });
+                self.push(Plane {
+                    a: narrow(from)?,
+                    d: narrow(d)?,
+                    o,
+                });
             }
         }
-        Some(piece)
+        Some(())
     }
 
-    /// The disk of centre `c` and squared radius `r2` cut by `planes`.
-    fn sector(c: Pt, r2: i128, planes: &[Plane]) -> Self {
+    /// The disk of centre `c` and squared radius `r2` cut by the
+    /// half-planes through `c` along `d` with sides `o`.
+    fn sector(c: Pt, r2: i128, planes: &[(Pt, i128)], f: &mut dyn FnMut(&Piece)) {
         let mut piece = Self::empty();
-        planes.iter().for_each(|&p| piece.push(p));
-        piece.disk = Some((c, r2));
-        piece
+        if piece.set_sector(c, r2, planes).is_some() {
+            f(&piece);
+        }
     }
 
+    fn set_sector(&mut self, c: Pt, r2: i128, planes: &[(Pt, i128)]) -> Option<()> {
+        let c = narrow(c)?;
+        for &(d, o) in planes {
+            self.push(Plane {
+                a: c,
+                d: narrow(d)?,
+                o: o.signum() as i8,
+            });
+        }
+        self.disk = Some((c, i64::try_from(r2).ok()?));
+        Some(())
+    }
+
+    #[inline(always)]
     fn empty() -> Self {
         let none = Plane {
             a: (0, 0),
@@ -114,6 +157,7 @@ impl Piece {
         }
     }
 
+    #[inline(always)]
     fn push(&mut self, plane: Plane) {
         if let Some(slot) = self.planes.get_mut(self.count) {
             *slot = plane;
@@ -126,7 +170,11 @@ impl Piece {
 /// floor(2 a / sqrt(len2)) = isqrt(floor(4 a^2 / len2))`, the nearest
 /// integer is `ceil(t / 2)`. `a < 2^59`, so `4 a^2 < 2^120`.
 fn div_sqrt(a: u128, len2: u128) -> i128 {
-    let t = (4 * a * a / len2).isqrt();
+    // In 64 bits when it fits (any stroke on a screen): much cheaper.
+    let t = match (u64::try_from(4 * a * a), u64::try_from(len2)) {
+        (Ok(n), Ok(d)) => u128::from((n / d).isqrt()),
+        _ => (4 * a * a / len2).isqrt(),
+    };
     i128::try_from(t.div_ceil(2)).unwrap_or_default()
 }
 
@@ -163,22 +211,24 @@ impl Segment {
 
     /// The segment's parallelogram with offset `n`, its start moved back
     /// by `start` and its end forward by `end` (each `e` or zero).
-    pub fn piece(&self, n: Pt, start: Pt, end: Pt) -> Option<Piece> {
+    #[inline(always)]
+    pub fn piece(&self, n: Pt, start: Pt, end: Pt, f: &mut dyn FnMut(&Piece)) {
         let (a, b) = (sub(self.a, start), add(self.b, end));
-        Piece::polygon(&[add(a, n), add(b, n), sub(b, n), sub(a, n)])
+        Piece::polygon(&[add(a, n), add(b, n), sub(b, n), sub(a, n)], f);
     }
 }
 
 /// The `w x w` square around `p` that a stroke of no length draws, as a
 /// zero-length thick line does.
-pub(crate) fn square(p: Pt, w: i128) -> Option<Piece> {
+pub(crate) fn square(p: Pt, w: i128, f: &mut dyn FnMut(&Piece)) {
     let r = 2048 * w;
-    Piece::polygon(&[
+    let corners = [
         (p.0 - r, p.1 + r),
         (p.0 + r, p.1 + r),
         (p.0 + r, p.1 - r),
         (p.0 - r, p.1 - r),
-    ])
+    ];
+    Piece::polygon(&corners, f);
 }
 
 /// Calls `f` with the pieces of the join at `p` between a segment with
@@ -202,8 +252,7 @@ pub(crate) fn join(p: Pt, n0: Pt, d0: Pt, n1: Pt, w: i128, kind: Join, f: &mut d
     let dot = n0.0 * n1.0 + n0.1 * n1.1;
     if c == 0 {
         if dot < 0 && kind == Join::Round {
-            let o = cross(n0, d0).signum();
-            f(&Piece::sector(p, r2, &[Plane { a: p, d: n0, o }]));
+            Piece::sector(p, r2, &[(n0, cross(n0, d0))], f);
         }
         return;
     }
@@ -212,14 +261,10 @@ pub(crate) fn join(p: Pt, n0: Pt, d0: Pt, n1: Pt, w: i128, kind: Join, f: &mut d
     let (c0, c1) = (add(p, u0), add(p, u1));
     if kind == Join::Round {
         // cross(u0, u1) = c: the cone is on u1's side of u0 and u0's of u1.
-        let o = c.signum();
-        let planes = [Plane { a: p, d: u0, o }, Plane { a: p, d: u1, o: -o }];
-        f(&Piece::sector(p, r2, &planes));
+        Piece::sector(p, r2, &[(u0, c), (u1, -c)], f);
         return;
     }
-    if let Some(bevel) = Piece::polygon(&[p, c0, c1]) {
-        f(&bevel);
-    }
+    Piece::polygon(&[p, c0, c1], f);
     let l2 = i128::from(MITER_LIMIT) * i128::from(MITER_LIMIT);
     if kind == Join::Miter && l2 * dot >= (2 - l2) * r2 {
         // r^2 + n0.n1 >= 2 r^2 / L^2 > 0.
@@ -228,8 +273,6 @@ pub(crate) fn join(p: Pt, n0: Pt, d0: Pt, n1: Pt, w: i128, kind: Join, f: &mut d
             p.0 + round_div((u0.0 + u1.0) * r2, den),
             p.1 + round_div((u0.1 + u1.1) * r2, den),
         );
-        if let Some(tip) = Piece::polygon(&[c0, m, c1]) {
-            f(&tip);
-        }
+        Piece::polygon(&[c0, m, c1], f);
     }
 }
