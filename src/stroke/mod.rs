@@ -38,11 +38,11 @@
 //! No heap and no storage proportional to the number of points: each row
 //! walks the points, building only the pieces that can reach it, and
 //! merges up to 64 intervals on the stack (1 KiB); a row crossed by more
-//! pieces is merged by repeated passes instead. The offsets of up to 32
+//! pieces takes one more pass over them per 64. The offsets of up to 32
 //! segments are kept between rows (768 bytes), so their square roots are
 //! taken once. A row costs `O(n)` for `n` points plus `O(k log k)` for the
 //! `k` pieces crossing it (four divisions each, in 64 bits on any screen;
-//! `O(k^2)` past 64), and only rows of the target within reach of a point
+//! `k / 64` passes past 64), and only rows of the target within reach of a point
 //! are visited.
 //!
 //! # Ranges
@@ -101,9 +101,9 @@ use pieces::{Piece, Pt, Segment};
 /// No heap, no storage proportional to the number of points (about 2 KiB
 /// of stack): each row walks the points and builds only the pieces within
 /// reach of it, and merges up to 64 intervals on the stack (more, by
-/// repeated passes over the pieces). A row costs `O(n)` for `n` points
+/// one more pass over the pieces per 64). A row costs `O(n)` for `n` points
 /// plus `O(k log k)` for the `k` pieces crossing it (a few 64-bit
-/// divisions each; `O(k^2)` past 64); only rows of the target within
+/// divisions each; `k / 64` passes past 64); only rows of the target within
 /// reach of a point are visited. Measured on the host, a 20-segment zigzag
 /// 8 px wide across a 320 x 240 framebuffer takes about 5 times as long as
 /// its segments drawn as separate thick lines (which overlap and leave

@@ -121,42 +121,67 @@ fn disk_interval(c: (i64, i64), r2: i64, py: i64) -> Option<(i64, i64)> {
     (lo < hi).then_some((lo, hi))
 }
 
-/// Intervals of one row kept before falling back to repeated passes.
+/// Intervals of one row kept on the stack in one pass.
 const BUFFERED: usize = 64;
 
 /// Emits the union of the intervals `visit` reports (each `lo..hi`, any
-/// order, empty ones ignored) as disjoint, non-touching spans from left to
-/// right.
+/// order, empty ones ignored) as disjoint spans from left to right.
 ///
-/// Up to [`BUFFERED`] intervals (1 KiB) are sorted and merged on the stack. A row
-/// crossed by more pieces than that is merged without storage, by passes
-/// over the pieces: each pass extends the current span by every interval
-/// starting inside it and finds where the next one starts, so a row costs
-/// `O(k)` passes of `k` intervals at most (each pass but one per span moves
-/// the span's end to a new interval's end).
+/// Each pass over the pieces keeps, sorted, the [`BUFFERED`] intervals
+/// (1 KiB) that start first at or after `cur`, clipped to start there,
+/// and notes `lim`, the first start it had to leave out. Every interval
+/// starting before `lim` was kept, so the union is exact on `cur..lim`:
+/// that part is emitted and the next pass starts at `lim`. A row crossed
+/// by at most `BUFFERED` pieces takes one pass; more take about one pass
+/// per `BUFFERED` of them (a span may then be emitted in touching parts).
+/// If every kept interval starts at `lim` (more than `BUFFERED` start
+/// there), the pass emits from `lim` up to the nearest of their ends
+/// instead. `cur` grows every pass, so the passes end.
 pub(crate) fn union<E>(
     mut visit: impl FnMut(&mut dyn FnMut(i64, i64)),
     mut emit: impl FnMut(i64, i64) -> Result<(), E>,
 ) -> Result<(), E> {
     let mut buf = [(0i64, 0i64); BUFFERED];
-    let (mut n, mut overflow) = (0, false);
-    visit(&mut |a, b| {
-        if a < b {
-            match buf.get_mut(n) {
-                Some(slot) => {
-                    *slot = (a, b);
-                    n += 1;
-                }
-                None => overflow = true,
+    let mut cur = i64::MIN;
+    loop {
+        let (mut n, mut lim) = (0usize, i64::MAX);
+        visit(&mut |a, b| {
+            if b <= cur || a >= b {
+                return;
             }
+            let a = a.max(cur);
+            if n == BUFFERED {
+                let last = buf[n - 1].0;
+                if a >= last {
+                    lim = lim.min(a);
+                    return;
+                }
+                lim = lim.min(last);
+                n -= 1;
+            }
+            let mut i = n;
+            while i > 0 && buf[i - 1].0 > a {
+                buf[i] = buf[i - 1];
+                i -= 1;
+            }
+            buf[i] = (a, b);
+            n += 1;
+        });
+        let kept = &buf[..n];
+        let Some(&(first, _)) = kept.first() else {
+            return Ok(());
+        };
+        if first >= lim {
+            // Every kept interval starts at `first = lim`, and none before:
+            // emit up to the nearest end.
+            let end = kept.iter().map(|&(_, b)| b).min().unwrap_or(first);
+            emit(first, end)?;
+            cur = end;
+            continue;
         }
-    });
-    if !overflow {
-        let buf = &mut buf[..n];
-        buf.sort_unstable_by_key(|&(a, _)| a);
-        let mut current: Option<(i64, i64)> = None;
-        for &(a, b) in buf.iter() {
-            current = match current {
+        let mut span: Option<(i64, i64)> = None;
+        for &(a, b) in kept.iter().filter(|&&(a, _)| a < lim) {
+            span = match span {
                 Some((s, e)) if a <= e => Some((s, e.max(b))),
                 Some((s, e)) => {
                     emit(s, e)?;
@@ -165,64 +190,69 @@ pub(crate) fn union<E>(
                 None => Some((a, b)),
             };
         }
-        return match current {
-            Some((s, e)) => emit(s, e),
-            None => Ok(()),
-        };
-    }
-    let mut start: Option<i64> = None;
-    visit(&mut |a, b| {
-        if a < b {
-            start = Some(start.map_or(a, |s| s.min(a)));
+        if let Some((s, e)) = span {
+            emit(s, e.min(lim))?;
         }
-    });
-    while let Some(s) = start {
-        let mut end = s;
-        loop {
-            let (mut grown, mut next) = (end, None::<i64>);
-            visit(&mut |a, b| {
-                if a >= b {
-                } else if a <= end {
-                    grown = grown.max(b);
-                } else {
-                    next = Some(next.map_or(a, |x| x.min(a)));
-                }
-            });
-            if grown == end {
-                start = next;
-                break;
-            }
-            end = grown;
+        if lim == i64::MAX {
+            return Ok(());
         }
-        emit(s, end)?;
+        cur = lim;
     }
-    Ok(())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// The union by passes equals the buffered one.
+    /// The pixels of `0..128` the union emits, checking that no pixel is
+    /// emitted twice.
+    fn pixels(visit: impl FnMut(&mut dyn FnMut(i64, i64))) -> u128 {
+        let mut set = 0u128;
+        union(visit, |a, b| {
+            for x in a..b {
+                assert!(set & (1 << x) == 0, "pixel {x} twice");
+                set |= 1 << x;
+            }
+            Ok::<(), ()>(())
+        })
+        .unwrap();
+        set
+    }
+
+    /// The union over many passes (copies and shifted copies past the
+    /// buffer) equals the plain union.
     #[test]
-    fn passes_match_the_buffer() {
-        let sets: [&[(i64, i64)]; 3] = [
+    fn passes_match_the_plain_union() {
+        let sets: [&[(i64, i64)]; 4] = [
             &[(0, 3), (2, 5), (7, 9), (9, 10), (12, 12), (4, 6)],
-            &[(5, 6), (-3, 0), (0, 1)],
+            &[(5, 6), (0, 1), (1, 2), (40, 63)],
+            &[(3, 60)],
             &[],
         ];
         for set in sets {
-            // 17 copies overflow the buffer.
+            let want = set
+                .iter()
+                .flat_map(|&(a, b)| a..b)
+                .fold(0u128, |m, x| m | 1 << x);
+            assert_eq!(pixels(|f| set.iter().for_each(|&(a, b)| f(a, b))), want);
+            // 3 x BUFFERED copies: all start together, the nearest-end rule.
             let many = |f: &mut dyn FnMut(i64, i64)| {
-                for _ in 0..=BUFFERED {
+                for _ in 0..3 * BUFFERED {
                     set.iter().for_each(|&(a, b)| f(a, b));
                 }
             };
-            let once = |f: &mut dyn FnMut(i64, i64)| set.iter().for_each(|&(a, b)| f(a, b));
-            let (mut x, mut y) = (heapless::Vec::<_, 8>::new(), heapless::Vec::<_, 8>::new());
-            union(many, |a, b| x.push((a, b)).map_err(|_| ())).unwrap();
-            union(once, |a, b| y.push((a, b)).map_err(|_| ())).unwrap();
-            assert_eq!(x, y);
+            assert_eq!(pixels(many), want);
+            // Shifted and shortened copies: many distinct starts.
+            let shifted = |f: &mut dyn FnMut(i64, i64)| {
+                for k in 0..3 * BUFFERED as i64 {
+                    set.iter().for_each(|&(a, b)| f(a + k % 3, b - k % 2));
+                }
+            };
+            let want = (0..3 * BUFFERED as i64)
+                .flat_map(|k| set.iter().map(move |&(a, b)| (a + k % 3, b - k % 2)))
+                .flat_map(|(a, b)| a..b)
+                .fold(0u128, |m, x| m | 1 << x);
+            assert_eq!(pixels(shifted), want);
         }
     }
 }
