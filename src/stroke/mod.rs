@@ -38,8 +38,8 @@
 //! No heap and no storage proportional to the number of points: each row
 //! walks the points, building only the pieces that can reach it, and
 //! merges up to 64 intervals on the stack (1 KiB); a row crossed by more
-//! pieces takes one more pass over them per 64. The offsets of up to 32
-//! segments are kept between rows (768 bytes), so their square roots are
+//! pieces takes one more pass over them per 64. The offsets of up to 64
+//! segments are kept between rows (1 KiB), so their square roots are
 //! taken once. A row costs `O(n)` for `n` points plus `O(k log k)` for the
 //! `k` pieces crossing it (four divisions each, in 64 bits on any screen;
 //! `k / 64` passes past 64), and only rows of the target within reach of a point
@@ -104,10 +104,13 @@ use pieces::{Piece, Pt, Segment};
 /// one more pass over the pieces per 64). A row costs `O(n)` for `n` points
 /// plus `O(k log k)` for the `k` pieces crossing it (a few 64-bit
 /// divisions each; `k / 64` passes past 64); only rows of the target within
-/// reach of a point are visited. Measured on the host, a 20-segment zigzag
-/// 8 px wide across a 320 x 240 framebuffer takes about 5 times as long as
-/// its segments drawn as separate thick lines (which overlap and leave
-/// notches).
+/// reach of a point are visited. Measured on the host against the same
+/// segments drawn as separate thick lines (which overlap and leave
+/// notches) on a 320 x 240 framebuffer: about 5 times as long for a
+/// 20-segment zigzag 8 px wide (0.27 ms), about 25 times for a noisy
+/// 320-point trace whose rows are each crossed by a hundred segments
+/// (9 ms): the separate lines step their edges from row to row, the
+/// stroke recomputes each piece's row without storing it.
 ///
 /// # Ranges
 ///
@@ -369,9 +372,15 @@ impl<'a> Stroke<'a> {
                 continue;
             };
             if near(seg.a.1, seg.b.1, side) {
-                let (n, e) = offsets.get(k, &seg, w);
-                let start = if open && k == first { e } else { (0, 0) };
-                let end = if open && k == last { e } else { (0, 0) };
+                let n = offsets.get(k, &seg, w);
+                let extend = |end: usize| {
+                    if open && k == end {
+                        seg.extension()
+                    } else {
+                        (0, 0)
+                    }
+                };
+                let (start, end) = (extend(first), extend(last));
                 seg.piece(n, start, end, f);
             }
             if let Some(p) = prev {
@@ -400,42 +409,41 @@ impl<'a> Stroke<'a> {
         if (py - p.1).abs() > self.reach() {
             return;
         }
-        let (n0, _) = offsets.get(k0, &s0, self.width);
-        let (n1, _) = offsets.get(k1, &s1, self.width);
+        let n0 = offsets.get(k0, &s0, self.width);
+        let n1 = offsets.get(k1, &s1, self.width);
         let d0 = (s0.b.0 - s0.a.0, s0.b.1 - s0.a.1);
         pieces::join(p, n0, d0, n1, self.width, self.join, f);
     }
 }
 
 /// Segments whose offsets are kept between rows.
-const CACHED: usize = 32;
+const CACHED: usize = 64;
 
-/// The offsets `(n, e)` of recently used segments, by index modulo
-/// [`CACHED`], so that a segment crossing many rows takes its square
-/// roots once (for up to `CACHED` segments). 768 bytes on the stack: the
-/// components fit `i32` (`|n| <= 2048 * 65535 < 2^27`).
+/// The offsets `n` of recently used segments, by index modulo [`CACHED`],
+/// so that a segment crossing many rows takes its square roots once (for
+/// up to `CACHED` segments). 1 KiB on the stack: the components fit `i32`
+/// (`|n| <= 2048 * 65535 < 2^27`).
 #[derive(Debug)]
 struct Offsets {
-    entries: [(usize, [i32; 4]); CACHED],
+    entries: [(usize, [i32; 2]); CACHED],
 }
 
 impl Offsets {
     fn new() -> Self {
         Self {
-            entries: [(usize::MAX, [0; 4]); CACHED],
+            entries: [(usize::MAX, [0; 2]); CACHED],
         }
     }
 
-    /// The offsets of segment `k`.
-    fn get(&mut self, k: usize, seg: &Segment, w: i128) -> (Pt, Pt) {
+    /// The offset `n` of segment `k`.
+    fn get(&mut self, k: usize, seg: &Segment, w: i128) -> Pt {
         let slot = &mut self.entries[k % CACHED];
         if slot.0 != k {
-            let (n, e) = seg.offsets(w);
+            let n = seg.normal(w);
             let c = |v: i128| i32::try_from(v).unwrap_or_default();
-            *slot = (k, [c(n.0), c(n.1), c(e.0), c(e.1)]);
+            *slot = (k, [c(n.0), c(n.1)]);
         }
-        let [nx, ny, ex, ey] = slot.1.map(i128::from);
-        ((nx, ny), (ex, ey))
+        (i128::from(slot.1[0]), i128::from(slot.1[1]))
     }
 }
 

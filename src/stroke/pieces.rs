@@ -191,22 +191,35 @@ pub(crate) struct Segment {
 }
 
 impl Segment {
-    /// The offsets `(n, e)` (module docs) for width `w <= 65535`.
+    /// The offset `n` (module docs) for width `w <= 65535`.
+    pub fn normal(&self, w: i128) -> Pt {
+        let scaled = self.scaler();
+        (-scaled(1, 2048 * w), scaled(0, 2048 * w))
+    }
+
+    /// The offset `e`, half a pixel along the segment.
+    pub fn extension(&self) -> Pt {
+        let scaled = self.scaler();
+        (scaled(0, 2048), scaled(1, 2048))
+    }
+
+    /// `scaled(i, f)`: component `i` of the direction times `f / |d|`,
+    /// rounded to the nearest raw unit (half away from zero).
     ///
-    /// Both are ratios of the direction, so it is first divided by the
-    /// largest power of two dividing both components: a direction
-    /// between pixel centres (a multiple of 4096) becomes one between
-    /// `i32` pixels, below `2^32` a component, as is any difference of
-    /// `Vertex` coordinates. Then `|d| w 2048 < 2^59`.
-    pub fn offsets(&self, w: i128) -> (Pt, Pt) {
+    /// A ratio of the direction, so it is first divided by the largest
+    /// power of two dividing both components: a direction between pixel
+    /// centres (a multiple of 4096) becomes one between `i32` pixels,
+    /// below `2^32` a component, as is any difference of `Vertex`
+    /// coordinates. Then `|d| f < 2^32 * 2048 * 65535 < 2^59`.
+    fn scaler(&self) -> impl Fn(usize, i128) -> i128 {
         let d = sub(self.b, self.a);
         let shift = (d.0 | d.1).trailing_zeros().min(127);
-        let d = (d.0 >> shift, d.1 >> shift);
-        let len2 = (d.0 * d.0 + d.1 * d.1).unsigned_abs();
-        let scaled = |c: i128, f: i128| c.signum() * div_sqrt(c.unsigned_abs() * f as u128, len2);
-        let e = (scaled(d.0, 2048), scaled(d.1, 2048));
-        let n = (-scaled(d.1, 2048 * w), scaled(d.0, 2048 * w));
-        (n, e)
+        let d = [d.0 >> shift, d.1 >> shift];
+        let len2 = (d[0] * d[0] + d[1] * d[1]).unsigned_abs();
+        move |i, f| {
+            let c = d[i & 1];
+            c.signum() * div_sqrt(c.unsigned_abs() * f.unsigned_abs(), len2)
+        }
     }
 
     /// The segment's parallelogram with offset `n`, its start moved back
