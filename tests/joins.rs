@@ -356,6 +356,23 @@ proptest! {
         check(&d, &Reference::ring(&v, width, join), &(&v, width, join));
     }
 
+    /// Segments from far outside (up to the ends of `i32`) through the
+    /// display, with joins inside it: the 128-bit paths, exact.
+    #[test]
+    fn far_points_through_the_display(
+        inner in prop::collection::vec((8i32..64, 8i32..64), 2..4),
+        far in prop::array::uniform2((-1i64 << 31..1i64 << 31, -1i64 << 31..1i64 << 31)),
+        width in 2u32..=24,
+        join in any_join(),
+    ) {
+        let mut points: Vec<Point> = inner.iter().map(|&(x, y)| Point::new(x, y)).collect();
+        let c = |v: i64| v.clamp(i32::MIN.into(), i32::MAX.into()) as i32;
+        points.insert(0, Point::new(c(far[0].0), c(far[0].1)));
+        points.push(Point::new(c(far[1].0), c(far[1].1)));
+        let d = draw_polyline(&points, width, join);
+        check(&d, &Reference::polyline(&points, width, join), &(&points, width, join));
+    }
+
     /// A two-point thick polyline is the thick line, pixel for pixel.
     #[test]
     fn two_points_are_the_thick_line(
