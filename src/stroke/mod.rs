@@ -27,8 +27,9 @@
 //!
 //! The pieces overlap (on the inside of every turn, and wherever the
 //! outline crosses itself), so they are not drawn one by one. Row by row,
-//! each convex piece's columns are found exactly (one `i128` division per
-//! side, an integer square root for a disk) and the row's spans are their
+//! each convex piece's columns are found exactly (one division per side,
+//! in 64 bits when the products fit and in 128 otherwise, an integer
+//! square root for a disk) and the row's spans are their
 //! union: every lit pixel is written exactly once, the pieces share their
 //! corner points exactly, and two pieces meeting along a line light each
 //! pixel on it once, through the nudge.
@@ -88,8 +89,9 @@ use pieces::{Piece, Pt, Segment};
 ///
 /// The pieces overlap on the inside of every turn and wherever the stroke
 /// crosses itself, so they are not drawn one by one: row by row, each
-/// convex piece's columns are found exactly (an `i128` division per side,
-/// an integer square root for a round join's disk) and the row's spans
+/// convex piece's columns are found exactly (a division per side, in 64
+/// bits on any screen and in 128 far out, an integer square root for a
+/// round join's disk) and the row's spans
 /// are their union. Every lit pixel is written exactly once. Neighbouring
 /// pieces share their corner points exactly and the join fills exactly the
 /// wedge the rounded rectangles leave (decided on the rounded corners, so
