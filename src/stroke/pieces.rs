@@ -1,13 +1,14 @@
 //! The convex pieces a stroke is the union of: one parallelogram per
 //! segment and, at each joint, the join's triangles or disk sector.
 //!
+//! A right turn at `P` (y down), the join on the outer side:
+//!
 //! ```text
-//!            u0 = s n0          outer side of the turn
-//!      c0 +-----------+ M       (M: the miter tip, Join::Miter)
-//!         |  bevel  /  \
-//!  seg 0  |       /  tip\
-//!  -------P-----/--------+ c1 = P + s n1
-//!         |   seg 1
+//!                   c0 +-----+ M      bevel: P, c0, c1
+//!                      |  \  |        tip:   c0, M, c1 (Join::Miter)
+//!   seg 0 ---------> P +-----+ c1     c0 = P + s n0, c1 = P + s n1
+//!                      |
+//!                      v seg 1
 //! ```
 //!
 //! A segment from `a` to `b` with direction `d` has the offsets
