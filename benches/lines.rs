@@ -1,6 +1,9 @@
 //! 1-pixel lines on a 320 x 240 Rgb565 framebuffer: this crate's exact
 //! Bresenham line, its DDA and naive variants, and embedded-graphics 0.8's
-//! `Line` with a 1-pixel stroke on the same framebuffer.
+//! `Line` with a 1-pixel stroke on the same framebuffer. Thick polylines
+//! 8 px wide: joined strokes (miter, round), the same segments as
+//! separate thick lines (overlapping, no joins), and embedded-graphics'
+//! `Polyline` with an 8 px stroke.
 //!
 //! `cargo bench --bench lines`; `benches/report_lines.py` turns the
 //! medians into the table in BENCHMARKS.md.
@@ -11,11 +14,11 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Through
 use embedded_graphics::{
     pixelcolor::Rgb565,
     prelude::*,
-    primitives::{Line as EgLine, PrimitiveStyle, Rectangle},
+    primitives::{Line as EgLine, Polyline as EgPolyline, PrimitiveStyle, Rectangle},
 };
 use embedded_raster::{
     framebuffer::{buffer_size, Rgb565Le},
-    Framebuffer, Line, LineAlgorithm,
+    Framebuffer, Join, Line, LineAlgorithm, Polyline,
 };
 
 const W: i32 = 320;
@@ -124,9 +127,62 @@ fn bench_set(c: &mut Criterion, name: &str, lines: &[(Point, Point)]) {
     g.finish();
 }
 
+/// A 21-point zigzag across the framebuffer and a noisy 320-point trace.
+fn polylines() -> [(&'static str, Vec<Point>); 2] {
+    let zigzag = (0..21)
+        .map(|k| Point::new(10 + k * 14, if k % 2 == 0 { 30 } else { 210 }))
+        .collect();
+    let mut r = Rng(0x5eed_1234_abcd_0001);
+    let trace = (0..W).map(|x| Point::new(x, 20 + r.below(200))).collect();
+    [("zigzag 21", zigzag), ("trace 320", trace)]
+}
+
+fn thick_polylines(c: &mut Criterion) {
+    const WIDTH: u32 = 8;
+    let mut fb = Box::new(Fb::new());
+    for (name, points) in polylines() {
+        let mut g = c.benchmark_group(format!("thick polyline {name}"));
+        for (id, join) in [("miter", Join::Miter), ("round", Join::Round)] {
+            g.bench_function(id, |b| {
+                b.iter(|| {
+                    Polyline::new(&points)
+                        .stroke(Rgb565::RED)
+                        .stroke_width(WIDTH)
+                        .join(join)
+                        .draw(&mut *fb)
+                        .unwrap();
+                    black_box(&fb);
+                })
+            });
+        }
+        g.bench_function("separate thick lines", |b| {
+            b.iter(|| {
+                for s in points.windows(2) {
+                    Line::new(s[0], s[1])
+                        .stroke(Rgb565::RED)
+                        .stroke_width(WIDTH)
+                        .draw(&mut *fb)
+                        .unwrap();
+                }
+                black_box(&fb);
+            })
+        });
+        let eg =
+            EgPolyline::new(&points).into_styled(PrimitiveStyle::with_stroke(Rgb565::GREEN, WIDTH));
+        g.bench_function("embedded-graphics", |b| {
+            b.iter(|| {
+                eg.draw(&mut *fb).unwrap();
+                black_box(&fb);
+            })
+        });
+        g.finish();
+    }
+}
+
 fn lines(c: &mut Criterion) {
     bench_set(c, "lines 8 px", &short());
     bench_set(c, "lines 300 px", &long());
+    thick_polylines(c);
 }
 
 criterion_group!(benches, lines);

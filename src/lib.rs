@@ -49,6 +49,7 @@
 //! | `raster` (private) | the one raster core: the wide-integer abstraction and exact orientation, the scan frame, the exact incremental edge (O(1) per row, quotient and remainder), the sink traits |
 //! | [`TriangleAlgorithm`], [`SubpixelPrecision`] | selectable triangle variants (exact edge equations, barycentric bounding-box test, fixed-point edge walking, Bresenham edge walking) and vertex snapping to 0, 4, 8 or 12 subpixel bits, for trading accuracy for speed (measured in `BENCHMARKS.md`) |
 //! | [`line`](mod@line) | [`Line`], [`Polyline`] and their styles: exact Bresenham lines between any `i32` pixels, clipped before stepping (tie rule: the smaller coordinate), emitted as [`Run`]s; [`LineAlgorithm`] variants (DDA, naive); thick lines as two triangles |
+//! | [`Join`], [`MITER_LIMIT`], [`StrokedTriangle`], [`StrokedPolygon`] | strokes (`stroke` private): thick polylines and the outlines of triangles and polygons as one exact union of segment rectangles and miter, bevel or round joins, filled row by row with each pixel written once, no heap |
 //! | [`Polygon`], [`FilledPolygon`], [`FillRule`] | the exact active-edge-table fill (even-odd and non-zero) with `heapless` storage of a chosen capacity, ear-clipping and fan triangulation, exact simple and convex tests |
 //! | [`shade`], [`GouraudTriangle`] | shading: the rounded average of vertex colours, Gouraud blends within 1 unit per channel (no per-pixel division), interpolated `u16` depth tested against a caller's [`DepthBuffer`](shade::DepthBuffer), each a separate type so flat-only code links none of it |
 //! | [`delaunay`] | Delaunay triangulation of up to `N` points in fixed storage ([`Delaunay`](delaunay::Delaunay)), incremental with Lawson flips, exact integer orientation and in-circle tests over the whole 20.12 range, deterministic on duplicates, collinear and cocircular points |
@@ -90,7 +91,7 @@
 //! |---|---|---|
 //! | [`Vertex`] coordinates (triangles, polygons, Gouraud, depth, [`delaunay`]) | 20.12: `[-524288, 524288 - 1/4096]`; every `Vertex` and every raw `i32` ([`Vertex::from_raw`]) | conversions return [`CoordinateOutOfRange`], parsing [`ParseCoordinateError`] |
 //! | [`Point`] to `Vertex` ([`Triangle::from_points`]) | `-524288..=524287` | [`CoordinateOutOfRange`] |
-//! | [`Line`] and [`Polyline`] points | any `i32` | none: 1-pixel lines exact everywhere, clipped; thick lines light nothing beyond the 20.12 range |
+//! | [`Line`] and [`Polyline`] points | any `i32` | none: 1-pixel lines and thick polylines exact everywhere, clipped; thick single lines light nothing beyond the 20.12 range |
 //! | stroke width | any `u32` | 0 draws nothing, over 65535 drawn as 65535 |
 //! | clip rectangles, target bounds | any `Rectangle`, even past `i32::MAX` | clipped; empty ones draw nothing |
 //! | [`Span`], [`Run`], [`SpanSink`] coordinates and lengths | any `i32` / `u32` | empty spans draw nothing; sums saturate at `i32::MAX` |
@@ -140,6 +141,7 @@ pub mod shade;
 #[cfg(feature = "sim")]
 pub mod sim;
 mod span;
+mod stroke;
 mod triangle;
 mod vertex;
 
@@ -159,11 +161,13 @@ pub use line::{
     Line, LineAlgorithm, Polyline, Run, StyledLine, StyledLineVariant, StyledPolyline,
     StyledPolylineVariant,
 };
-pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError};
+pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError, StrokedPolygon};
 pub use raster::sink::{DrawTargetSink, SpanDrawable, SpanSink};
 pub use shade::GouraudTriangle;
 pub use span::Span;
+pub use stroke::{Join, MITER_LIMIT};
 pub use triangle::{
-    FilledTriangle, FilledTriangleVariant, SubpixelPrecision, Triangle, TriangleAlgorithm,
+    FilledTriangle, FilledTriangleVariant, StrokedTriangle, SubpixelPrecision, Triangle,
+    TriangleAlgorithm,
 };
 pub use vertex::{ParseCoordinateError, Vertex, SUBPIXEL_BITS};

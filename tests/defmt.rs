@@ -10,8 +10,8 @@ use embedded_raster::{
         buffer_size, Bgr565Be, Bgr565Le, BinaryMsb, Gray2Lsb, Gray2Msb, Gray4Lsb, Gray4Msb,
         Gray8Bytes, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
     },
-    CoordinateOutOfRange, FilledTriangle, Framebuffer, ParseCoordinateError, Span, Triangle,
-    Vertex,
+    CoordinateOutOfRange, FilledTriangle, Framebuffer, Join, ParseCoordinateError, Span,
+    StrokedTriangle, Triangle, Vertex,
 };
 
 fn implements_format<T: defmt::Format + ?Sized>() {}
@@ -22,6 +22,8 @@ fn value_types_implement_format() {
     implements_format::<Triangle>();
     implements_format::<FilledTriangle<Rgb565>>();
     implements_format::<FilledTriangle<BinaryColor>>();
+    implements_format::<StrokedTriangle<Rgb565>>();
+    implements_format::<Join>();
     implements_format::<Span>();
     implements_format::<CoordinateOutOfRange>();
     implements_format::<ParseCoordinateError>();

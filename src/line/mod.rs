@@ -47,6 +47,12 @@
 //! half a pixel at each end, corners rounded to 1/4096 px. It follows the
 //! crate's sampling rule, so it shares edges with adjacent filled shapes
 //! without gaps or overdraw.
+//!
+//! A thick [`Polyline`] is one stroke: its segments' rectangles (the same
+//! corners) joined by a [`Join`](crate::Join) (miter by default, bevel
+//! past [`MITER_LIMIT`](crate::MITER_LIMIT), or round), filled as one
+//! union, so each pixel is written once and no joint has a gap. A
+//! two-point thick polyline is the thick line (within the 20.12 range).
 
 mod bresenham;
 mod clip;

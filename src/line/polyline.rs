@@ -3,7 +3,10 @@
 use embedded_graphics_core::{geometry::Point, pixelcolor::PixelColor, primitives::Rectangle};
 
 use super::{draw_segment, Exact, Line, LineAlgorithm, Run, RunSource};
-use crate::raster::sink::{drawable_through_spans, SpanDrawable, SpanSink};
+use crate::{
+    raster::sink::{drawable_through_spans, SpanDrawable, SpanSink},
+    stroke::{Join, Outline, Stroke},
+};
 
 /// Connected lines through `points`, in order, each joint pixel lit once.
 ///
@@ -15,9 +18,17 @@ use crate::raster::sink::{drawable_through_spans, SpanDrawable, SpanSink};
 /// out the final segment's last pixel, which the first segment lit. One
 /// point draws that pixel; no points draw nothing.
 ///
-/// Thick polylines ([`StyledPolyline::stroke_width`] above 1) are their
-/// segments' thick lines, without joins: they overlap on the inside of a
-/// turn.
+/// Thick polylines ([`StyledPolyline::stroke_width`] above 1) are one
+/// filled stroke: each segment's rectangle (as a thick [`Line`]'s, butt
+/// ends half a pixel beyond the end pixels' centres at the polyline's two
+/// ends) and, where segments meet, a [`Join`] filling the outside of the
+/// turn ([`Join::Miter`] by default, see [`StyledPolyline::join`]). The
+/// union is filled under the crate's sampling rule, so every pixel of it
+/// is written exactly once, on the inside of turns and where the polyline
+/// crosses itself too, and there is no gap at any joint. A closed polyline
+/// joins at its first point as well. Exact for any `i32` points (no cut
+/// at the 20.12 range as for a single thick line); [`Join`] has the
+/// details and the cost.
 ///
 /// # Examples
 ///
@@ -74,6 +85,7 @@ impl<'a> Polyline<'a> {
             polyline: self,
             color,
             width: 1,
+            join: Join::Miter,
         }
     }
 
@@ -109,13 +121,31 @@ impl<'a> Polyline<'a> {
             .try_for_each(|(line, skip_end)| line.runs(algorithm, clip, skip_end, &mut f))
     }
 
+    /// Whether the polyline is closed: at least 3 points, the last equal
+    /// to the first, not all equal.
+    fn is_closed(&self) -> bool {
+        let points = self.points;
+        points.len() >= 3
+            && points.first() == points.last()
+            && points.iter().any(|p| Some(p) != points.first())
+    }
+
+    /// The thick stroke of `width` (at least 2) with `join`: a closed
+    /// polyline is the ring of its points without the repeated last one.
+    fn thick(&self, width: u32, join: Join) -> Stroke<'a> {
+        let closed = self.is_closed();
+        let points = match self.points.split_last() {
+            Some((_, ring)) if closed => ring,
+            _ => self.points,
+        };
+        Stroke::new(Outline::Points(points), closed, width, join)
+    }
+
     /// Each segment and whether its last pixel is left out.
     fn segments(&self) -> impl Iterator<Item = (Line, bool)> + 'a {
         let points = self.points;
         let n = points.len();
-        let closed = n >= 3
-            && points.first() == points.last()
-            && points.iter().any(|p| Some(p) != points.first());
+        let closed = self.is_closed();
         let single = points
             .first()
             .filter(|_| n == 1)
@@ -152,14 +182,17 @@ pub struct StyledPolyline<'a, C> {
     pub color: C,
     /// The stroke width in pixels.
     pub width: u32,
+    /// How thick segments meet ([`Join::Miter`] unless set).
+    pub join: Join,
 }
 
 impl<'a, C> StyledPolyline<'a, C> {
     /// Sets the stroke width in pixels.
     ///
-    /// Any `u32`: 0 draws nothing; 1 is the 1-pixel polyline; 2 and more is a
-    /// filled rectangle that wide per segment (module docs, "Thick lines"), widths over
-    /// 65535 drawn as 65535.
+    /// Any `u32`: 0 draws nothing; 1 is the 1-pixel polyline; 2 and more is
+    /// a thick stroke that wide, its segments meeting in [`join`](Self::join)s
+    /// and each pixel written once (see [`Polyline`]), widths over 65535
+    /// drawn as 65535.
     ///
     /// # Examples
     ///
@@ -173,6 +206,29 @@ impl<'a, C> StyledPolyline<'a, C> {
     /// ```
     pub const fn stroke_width(mut self, width: u32) -> Self {
         self.width = width;
+        self
+    }
+
+    /// Sets how the segments of a thick polyline meet: [`Join::Miter`]
+    /// (the default, a bevel past [`MITER_LIMIT`](crate::MITER_LIMIT)),
+    /// [`Join::Bevel`] or [`Join::Round`]. 1-pixel polylines have no joins.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Join, Polyline};
+    ///
+    /// let mut fb = Framebuffer::<BinaryMsb, 16, 16, { buffer_size::<BinaryMsb>(16, 16) }>::new();
+    /// // A right angle 5 px wide: the bevel cuts off the outer corner.
+    /// let points = [Point::new(2, 4), Point::new(10, 4), Point::new(10, 14)];
+    /// Polyline::new(&points).stroke(BinaryColor::On).stroke_width(5).join(Join::Bevel).draw(&mut fb)?;
+    /// assert_eq!(fb.pixel(Point::new(12, 2)), Some(BinaryColor::Off));
+    /// assert_eq!(fb.pixel(Point::new(11, 3)), Some(BinaryColor::On));
+    /// # Ok::<(), core::convert::Infallible>(())
+    /// ```
+    pub const fn join(mut self, join: Join) -> Self {
+        self.join = join;
         self
     }
 
@@ -193,6 +249,7 @@ impl<'a, C> StyledPolyline<'a, C> {
             polyline: self.polyline,
             color: self.color,
             width: self.width,
+            join: self.join,
             algorithm,
         }
     }
@@ -202,7 +259,14 @@ impl<C: PixelColor> SpanDrawable for StyledPolyline<'_, C> {
     type Color = C;
 
     fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
-        draw_polyline(&self.polyline, self.width, Exact, self.color, sink)
+        draw_polyline(
+            &self.polyline,
+            self.width,
+            self.join,
+            Exact,
+            self.color,
+            sink,
+        )
     }
 }
 
@@ -230,6 +294,8 @@ pub struct StyledPolylineVariant<'a, C> {
     pub color: C,
     /// The stroke width in pixels.
     pub width: u32,
+    /// How thick segments meet ([`Join::Miter`] unless set).
+    pub join: Join,
     /// How 1-pixel segments choose their pixels.
     pub algorithm: LineAlgorithm,
 }
@@ -237,9 +303,10 @@ pub struct StyledPolylineVariant<'a, C> {
 impl<C> StyledPolylineVariant<'_, C> {
     /// Sets the stroke width in pixels.
     ///
-    /// Any `u32`: 0 draws nothing; 1 is the 1-pixel polyline; 2 and more is a
-    /// filled rectangle that wide per segment (module docs, "Thick lines"), widths over
-    /// 65535 drawn as 65535.
+    /// Any `u32`: 0 draws nothing; 1 is the 1-pixel polyline; 2 and more is
+    /// a thick stroke that wide, its segments meeting in [`join`](Self::join)s
+    /// and each pixel written once (see [`Polyline`]), widths over 65535
+    /// drawn as 65535.
     ///
     /// # Examples
     ///
@@ -253,6 +320,29 @@ impl<C> StyledPolylineVariant<'_, C> {
     /// ```
     pub const fn stroke_width(mut self, width: u32) -> Self {
         self.width = width;
+        self
+    }
+
+    /// Sets how the segments of a thick polyline meet: [`Join::Miter`]
+    /// (the default, a bevel past [`MITER_LIMIT`](crate::MITER_LIMIT)),
+    /// [`Join::Bevel`] or [`Join::Round`]. 1-pixel polylines have no joins.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Join, Polyline};
+    ///
+    /// let mut fb = Framebuffer::<BinaryMsb, 16, 16, { buffer_size::<BinaryMsb>(16, 16) }>::new();
+    /// // A right angle 5 px wide: the bevel cuts off the outer corner.
+    /// let points = [Point::new(2, 4), Point::new(10, 4), Point::new(10, 14)];
+    /// Polyline::new(&points).stroke(BinaryColor::On).stroke_width(5).join(Join::Bevel).draw(&mut fb)?;
+    /// assert_eq!(fb.pixel(Point::new(12, 2)), Some(BinaryColor::Off));
+    /// assert_eq!(fb.pixel(Point::new(11, 3)), Some(BinaryColor::On));
+    /// # Ok::<(), core::convert::Infallible>(())
+    /// ```
+    pub const fn join(mut self, join: Join) -> Self {
+        self.join = join;
         self
     }
 
@@ -278,7 +368,14 @@ impl<C: PixelColor> SpanDrawable for StyledPolylineVariant<'_, C> {
     type Color = C;
 
     fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
-        draw_polyline(&self.polyline, self.width, self.algorithm, self.color, sink)
+        draw_polyline(
+            &self.polyline,
+            self.width,
+            self.join,
+            self.algorithm,
+            self.color,
+            sink,
+        )
     }
 }
 
@@ -288,14 +385,18 @@ drawable_through_spans!(StyledPolyline<'_>, StyledPolylineVariant<'_>);
 fn draw_polyline<C: PixelColor, S: SpanSink<C>>(
     polyline: &Polyline<'_>,
     width: u32,
+    join: Join,
     source: impl RunSource,
     color: C,
     sink: &mut S,
 ) -> Result<(), S::Error> {
-    polyline.segments().try_for_each(|(line, skip_end)| {
-        // Thick segments are whole rectangles: no pixel to leave out.
-        draw_segment(line, width, source, skip_end && width == 1, color, sink)
-    })
+    match width {
+        0 => Ok(()),
+        1 => polyline
+            .segments()
+            .try_for_each(|(line, skip_end)| draw_segment(line, 1, source, skip_end, color, sink)),
+        w => polyline.thick(w, join).draw(color, sink),
+    }
 }
 
 #[cfg(feature = "defmt")]

@@ -31,6 +31,7 @@ use crate::{
     clip::Bounds,
     raster::sink::{DrawTargetSink, SpanDrawable, SpanSink},
     span::Span,
+    stroke::{Join, Outline, Stroke},
     triangle::Triangle,
     vertex::Vertex,
 };
@@ -316,6 +317,30 @@ impl<'a, const N: usize> Polygon<'a, N> {
         }
     }
 
+    /// Styles the polygon's outline as a stroke of `color`, 1 px wide with
+    /// [`Join::Miter`] corners; change them with
+    /// [`StrokedPolygon::stroke_width`] and [`StrokedPolygon::join`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_raster::{Join, Polygon, Vertex};
+    ///
+    /// let v = [Vertex::from_raw(0, 0), Vertex::from_raw(4096, 0), Vertex::from_raw(0, 4096)];
+    /// let stroked = Polygon::<3>::new(&v)?.stroke(BinaryColor::On);
+    /// assert_eq!((stroked.width, stroked.join), (1, Join::Miter));
+    /// # Ok::<(), embedded_raster::PolygonError>(())
+    /// ```
+    pub fn stroke<C: PixelColor>(self, color: C) -> StrokedPolygon<'a, C, N> {
+        StrokedPolygon {
+            polygon: self,
+            color,
+            width: 1,
+            join: Join::Miter,
+        }
+    }
+
     /// The pixels of an axis-aligned rectangle, if the polygon is one.
     fn as_pixel_rect(&self) -> Option<Bounds> {
         let &[a, b, c, d] = self.vertices else {
@@ -415,6 +440,105 @@ impl<C: PixelColor, const N: usize> SpanDrawable for FilledPolygon<'_, C, N> {
 }
 
 impl<C: PixelColor, const N: usize> Drawable for FilledPolygon<'_, C, N> {
+    type Color = C;
+    type Output = ();
+
+    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        self.draw_spans(&mut DrawTargetSink::new(target))
+    }
+}
+
+/// The outline of a [`Polygon`] as a stroke: a [`Drawable`].
+///
+/// The closed thick polyline through the vertices (subpixel positions),
+/// `width` px wide, corners filled by the [`Join`], every pixel written
+/// exactly once under the crate's sampling rule, where the outline
+/// crosses itself too (the same code as a thick
+/// [`Polyline`](crate::Polyline)). Repeated vertices are skipped. It needs
+/// no storage, whatever `N`. Width 0 draws nothing, widths over 65535 draw
+/// as 65535.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Polygon, Vertex};
+///
+/// let mut fb = Framebuffer::<BinaryMsb, 32, 32, { buffer_size::<BinaryMsb>(32, 32) }>::new();
+/// let square = [(4, 4), (28, 4), (28, 28), (4, 28)].map(|(x, y)| Vertex::try_from_num(x, y).unwrap());
+/// Polygon::<4>::new(&square)?.stroke(BinaryColor::On).stroke_width(4).draw(&mut fb).unwrap();
+/// // Rows 2 to 5 along the top, the miter corners square.
+/// assert_eq!(fb.pixel(Point::new(2, 2)), Some(BinaryColor::On));
+/// assert_eq!(fb.pixel(Point::new(16, 5)), Some(BinaryColor::On));
+/// assert_eq!(fb.pixel(Point::new(16, 6)), Some(BinaryColor::Off));
+/// # Ok::<(), embedded_raster::PolygonError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct StrokedPolygon<'a, C, const N: usize> {
+    /// The shape.
+    pub polygon: Polygon<'a, N>,
+    /// The stroke colour.
+    pub color: C,
+    /// The stroke width in pixels.
+    pub width: u32,
+    /// How the edges meet at the corners.
+    pub join: Join,
+}
+
+impl<C, const N: usize> StrokedPolygon<'_, C, N> {
+    /// Sets the stroke width in pixels: any `u32`, 0 draws nothing, over
+    /// 65535 drawn as 65535.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_raster::{Polygon, Vertex};
+    ///
+    /// let v = [Vertex::from_raw(0, 0), Vertex::from_raw(4096, 0), Vertex::from_raw(0, 4096)];
+    /// assert_eq!(Polygon::<3>::new(&v)?.stroke(BinaryColor::On).stroke_width(6).width, 6);
+    /// # Ok::<(), embedded_raster::PolygonError>(())
+    /// ```
+    pub const fn stroke_width(mut self, width: u32) -> Self {
+        self.width = width;
+        self
+    }
+
+    /// Sets how the edges meet at the corners.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_raster::{Join, Polygon, Vertex};
+    ///
+    /// let v = [Vertex::from_raw(0, 0), Vertex::from_raw(4096, 0), Vertex::from_raw(0, 4096)];
+    /// let p = Polygon::<3>::new(&v)?.stroke(BinaryColor::On).join(Join::Round);
+    /// assert_eq!(p.join, Join::Round);
+    /// # Ok::<(), embedded_raster::PolygonError>(())
+    /// ```
+    pub const fn join(mut self, join: Join) -> Self {
+        self.join = join;
+        self
+    }
+}
+
+impl<C: PixelColor, const N: usize> SpanDrawable for StrokedPolygon<'_, C, N> {
+    type Color = C;
+
+    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
+        if self.width == 0 {
+            return Ok(());
+        }
+        let outline = Outline::Vertices(self.polygon.vertices);
+        Stroke::new(outline, true, self.width, self.join).draw(self.color, sink)
+    }
+}
+
+impl<C: PixelColor, const N: usize> Drawable for StrokedPolygon<'_, C, N> {
     type Color = C;
     type Output = ();
 

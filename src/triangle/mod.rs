@@ -11,6 +11,7 @@ use crate::{
     error::CoordinateOutOfRange,
     raster::sink::{drawable_through_spans, SpanDrawable, SpanSink},
     span::Span,
+    stroke::{Join, Outline, Stroke},
     vertex::Vertex,
 };
 
@@ -107,6 +108,28 @@ impl Triangle {
         FilledTriangle {
             triangle: self,
             color,
+        }
+    }
+
+    /// Styles the triangle's outline as a stroke of `color`, 1 px wide
+    /// with [`Join::Miter`] corners; change them with
+    /// [`StrokedTriangle::stroke_width`] and [`StrokedTriangle::join`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_raster::{Join, Triangle};
+    ///
+    /// let stroked = Triangle::default().stroke(BinaryColor::On);
+    /// assert_eq!((stroked.width, stroked.join), (1, Join::Miter));
+    /// ```
+    pub const fn stroke<C: PixelColor>(self, color: C) -> StrokedTriangle<C> {
+        StrokedTriangle {
+            triangle: self,
+            color,
+            width: 1,
+            join: Join::Miter,
         }
     }
 
@@ -295,6 +318,88 @@ impl<C: PixelColor> SpanDrawable for FilledTriangle<C> {
     }
 }
 
+/// The outline of a [`Triangle`] as a stroke: a [`Drawable`](embedded_graphics_core::Drawable).
+///
+/// The stroke is the closed thick polyline through the three vertices
+/// (subpixel positions, not pixel centres): a band `width` px wide centred
+/// on each edge, the corners filled by the [`Join`], every pixel of it
+/// written exactly once under the crate's sampling rule (the same code as
+/// a thick [`Polyline`](crate::Polyline), see there). Width 0 draws
+/// nothing, widths over 65535 draw as 65535; a triangle with all three
+/// vertices equal is the `width x width` square around them.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, Join, Triangle};
+///
+/// let mut fb = Framebuffer::<Gray8Bytes, 32, 32, { buffer_size::<Gray8Bytes>(32, 32) }>::new();
+/// let t = Triangle::from_points(Point::new(4, 4), Point::new(27, 4), Point::new(4, 27)).unwrap();
+/// t.stroke(Gray8::WHITE).stroke_width(3).join(Join::Round).draw(&mut fb)?;
+/// let lit = |x, y| fb.pixel(Point::new(x, y)) == Some(Gray8::WHITE);
+/// assert!(lit(15, 4) && lit(4, 15) && lit(15, 16) && !lit(10, 10));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct StrokedTriangle<C> {
+    /// The shape.
+    pub triangle: Triangle,
+    /// The stroke colour.
+    pub color: C,
+    /// The stroke width in pixels.
+    pub width: u32,
+    /// How the edges meet at the corners.
+    pub join: Join,
+}
+
+impl<C> StrokedTriangle<C> {
+    /// Sets the stroke width in pixels: any `u32`, 0 draws nothing, over
+    /// 65535 drawn as 65535.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_raster::Triangle;
+    ///
+    /// assert_eq!(Triangle::default().stroke(BinaryColor::On).stroke_width(4).width, 4);
+    /// ```
+    pub const fn stroke_width(mut self, width: u32) -> Self {
+        self.width = width;
+        self
+    }
+
+    /// Sets how the edges meet at the corners.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_raster::{Join, Triangle};
+    ///
+    /// let t = Triangle::default().stroke(BinaryColor::On).join(Join::Bevel);
+    /// assert_eq!(t.join, Join::Bevel);
+    /// ```
+    pub const fn join(mut self, join: Join) -> Self {
+        self.join = join;
+        self
+    }
+}
+
+impl<C: PixelColor> SpanDrawable for StrokedTriangle<C> {
+    type Color = C;
+
+    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
+        if self.width == 0 {
+            return Ok(());
+        }
+        let outline = Outline::Vertices(&self.triangle.vertices);
+        Stroke::new(outline, true, self.width, self.join).draw(self.color, sink)
+    }
+}
+
 /// A filled triangle drawn with a chosen [`TriangleAlgorithm`] at a chosen
 /// [`SubpixelPrecision`], made by [`FilledTriangle::algorithm`] or
 /// [`FilledTriangle::precision`]. Spans go to the target as
@@ -371,7 +476,7 @@ impl<C> FilledTriangleVariant<C> {
     }
 }
 
-drawable_through_spans!(FilledTriangle);
+drawable_through_spans!(FilledTriangle, StrokedTriangle);
 
 impl<C: PixelColor> SpanDrawable for FilledTriangleVariant<C> {
     type Color = C;

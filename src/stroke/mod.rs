@@ -1,0 +1,474 @@
+//! Strokes: thick polylines with joins, and the outlines of triangles and
+//! polygons, filled exactly and each pixel once.
+//!
+//! # What a stroke covers
+//!
+//! A stroke `w` px wide through points `P0, P1, ...` is the union of
+//!
+//! - one parallelogram per segment of non-zero length, `w` px across and
+//!   centred on the segment (see [`pieces`] for the corners, rounded to
+//!   1/4096 px as thick lines' are); an open stroke's two ends reach half a
+//!   pixel beyond its end points (butt caps at the end pixels' outer edges,
+//!   as a thick [`Line`](crate::Line));
+//! - one [`Join`] at every point where two segments meet, filling the
+//!   wedge the two parallelograms leave on the outside of the turn: a
+//!   bevel triangle, a miter (the bevel plus the tip out to where the outer
+//!   edges cross, within [`MITER_LIMIT`]), or an exact disk sector of
+//!   radius `w / 2`;
+//!
+//! and a pixel is lit iff its centre, nudged as the crate's sampling rule
+//! says, lies in that union. A closed stroke (a polyline whose last point
+//! repeats its first, or a triangle's or polygon's outline) also joins at
+//! that point. Repeated points are skipped (segments of no length have no
+//! parallelogram and make no joint); a stroke with no length at all is the
+//! `w x w` square around its point.
+//!
+//! # Each pixel once
+//!
+//! The pieces overlap (on the inside of every turn, and wherever the
+//! outline crosses itself), so they are not drawn one by one. Row by row,
+//! each convex piece's columns are found exactly (one division per side,
+//! in 64 bits when the products fit and in 128 otherwise, an integer
+//! square root for a disk) and the row's spans are their
+//! union: every lit pixel is written exactly once, the pieces share their
+//! corner points exactly, and two pieces meeting along a line light each
+//! pixel on it once, through the nudge.
+//!
+//! # Cost and storage
+//!
+//! No heap and no storage proportional to the number of points: each row
+//! walks the points, building only the pieces that can reach it, and
+//! merges up to 64 intervals on the stack (1 KiB); a row crossed by more
+//! pieces takes one more pass over them per 64. The offsets of up to 64
+//! segments are kept between rows (1 KiB), so their square roots are
+//! taken once. A row costs `O(n)` for `n` points plus `O(k log k)` for the
+//! `k` pieces crossing it (four divisions each, in 64 bits on any screen;
+//! `k / 64` passes past 64), and only rows of the target within reach of a point
+//! are visited.
+//!
+//! # Ranges
+//!
+//! Any `i32` points (polylines) and any [`Vertex`]es (triangles,
+//! polygons), any width up to 65535 px (wider is drawn as 65535), any
+//! clip: coordinates are kept in `i128` raw units, below `2^46`, so no
+//! product overflows and nothing is cut or lost at the edges of the 20.12
+//! range.
+
+pub(crate) mod pieces;
+mod row;
+
+use embedded_graphics_core::{
+    geometry::{Point, Size},
+    primitives::Rectangle,
+};
+
+use crate::{clip::Bounds, raster::sink::SpanSink, span::Span, vertex::Vertex};
+use pieces::{Piece, Pt, Segment};
+
+/// How a thick stroke turns a corner: the shape filling the wedge the two
+/// segments leave on the outside of the turn.
+///
+/// Used by thick polylines ([`StyledPolyline::join`](crate::StyledPolyline::join))
+/// and by the outlines of triangles ([`StrokedTriangle`](crate::StrokedTriangle))
+/// and polygons ([`StrokedPolygon`](crate::StrokedPolygon)).
+///
+/// # What a stroke covers
+///
+/// A stroke `w` px wide is the union of one rectangle per segment of
+/// non-zero length (`w` px across, centred on the segment, corners rounded
+/// to 1/4096 px as a thick [`Line`](crate::Line)'s are; at the two ends of
+/// an open stroke it reaches half a pixel beyond the end point, a butt
+/// cap) and one join at every point where two segments meet. Repeated
+/// points are skipped; a stroke of no length is the `w x w` square around
+/// its point. A closed stroke (a polyline whose last point repeats its
+/// first, or an outline) joins at that point too. A pixel is lit iff its
+/// centre, nudged as the [crate's sampling rule](crate#the-sampling-rule)
+/// says, is in the union.
+///
+/// # Each pixel once, no gaps
+///
+/// The pieces overlap on the inside of every turn and wherever the stroke
+/// crosses itself, so they are not drawn one by one: row by row, each
+/// convex piece's columns are found exactly (a division per side, in 64
+/// bits on any screen and in 128 far out, an integer square root for a
+/// round join's disk) and the row's spans
+/// are their union. Every lit pixel is written exactly once. Neighbouring
+/// pieces share their corner points exactly and the join fills exactly the
+/// wedge the rounded rectangles leave (decided on the rounded corners, so
+/// even turns within a hair of straight or of a full reversal leave no
+/// gap).
+///
+/// # Cost and storage
+///
+/// No heap, no storage proportional to the number of points (about 2 KiB
+/// of stack): each row walks the points and builds only the pieces within
+/// reach of it, and merges up to 64 intervals on the stack (more, by
+/// one more pass over the pieces per 64). A row costs `O(n)` for `n` points
+/// plus `O(k log k)` for the `k` pieces crossing it (a few 64-bit
+/// divisions each; `k / 64` passes past 64); only rows of the target within
+/// reach of a point are visited.
+///
+/// Measured on the host, 8 px wide on a 320 x 240 framebuffer (`cargo
+/// bench --bench lines -- "thick polyline"`): a 21-point zigzag takes
+/// 0.26 ms and a noisy 320-point trace (each row crossed by about a
+/// hundred segments) 9 ms. That is 5 and 20 times as long as the same
+/// segments drawn as separate thick lines, which step their edges from
+/// row to row but overlap and leave notches, and 4.7 and 1.8 times faster
+/// than embedded-graphics 0.8's `Polyline` with the same stroke (1.25 ms
+/// and 17 ms).
+///
+/// # Ranges
+///
+/// Any `i32` points, any [`Vertex`]es, any width (over 65535 px drawn as
+/// 65535), any clip: coordinates are kept in `i128` raw units below
+/// `2^46`, so nothing overflows and, unlike a single thick line, nothing
+/// is cut at the edges of the 20.12 range.
+///
+/// # Examples
+///
+/// A right angle 7 px wide (the mock display fails on any pixel written
+/// twice):
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_raster::{Join, Polyline};
+///
+/// let points = [Point::new(0, 3), Point::new(7, 3), Point::new(7, 10)];
+/// let draw = |join| {
+///     let mut display = MockDisplay::new();
+///     Polyline::new(&points).stroke(BinaryColor::On).stroke_width(7).join(join).draw(&mut display)?;
+///     Ok::<_, core::convert::Infallible>(display)
+/// };
+/// draw(Join::Miter)?.assert_pattern(&[
+///     "###########",
+///     "###########",
+///     "###########",
+///     "###########",
+///     "###########",
+///     "###########",
+///     "###########",
+///     "    #######",
+///     "    #######",
+///     "    #######",
+///     "    #######",
+/// ]);
+/// draw(Join::Bevel)?.assert_pattern(&[
+///     "########   ",
+///     "#########  ",
+///     "########## ",
+///     "###########",
+///     "###########",
+///     "###########",
+///     "###########",
+///     "    #######",
+///     "    #######",
+///     "    #######",
+///     "    #######",
+/// ]);
+/// draw(Join::Round)?.assert_pattern(&[
+///     "#########  ",
+///     "########## ",
+///     "###########",
+///     "###########",
+///     "###########",
+///     "###########",
+///     "###########",
+///     "    #######",
+///     "    #######",
+///     "    #######",
+///     "    #######",
+/// ]);
+/// assert_eq!(Join::default(), Join::Miter);
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Join {
+    /// The outer edges extended until they meet, while the tip is within
+    /// [`MITER_LIMIT`]; a bevel past it. The default, as in
+    /// embedded-graphics.
+    #[default]
+    Miter,
+    /// The outer corners of the two segments joined by a straight edge.
+    Bevel,
+    /// An exact circular arc of radius `w / 2` around the joint (the
+    /// pixels whose centres lie within `w / 2` of it, on the outer side).
+    Round,
+}
+
+/// The miter limit: a [`Join::Miter`] whose miter length (from the inner
+/// to the outer corner, `w / cos(turn / 2)`) would be over `MITER_LIMIT`
+/// times the stroke width is drawn as a [`Join::Bevel`].
+///
+/// 4 is SVG's default `stroke-miterlimit`, and embedded-graphics' rule
+/// (the tip at most twice the width from the joint): turns up to about
+/// 151 degrees (interior angles down to about 29) keep their miter. The
+/// test is exact on the rounded offsets, `16 n0.n1 >= -14 (w / 2)^2`.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::MITER_LIMIT;
+///
+/// // cos(turn) >= 2 / L^2 - 1: a right angle keeps its miter.
+/// let l = MITER_LIMIT as f64;
+/// assert!(90f64.to_radians().cos() >= 2.0 / (l * l) - 1.0);
+/// assert!(160f64.to_radians().cos() < 2.0 / (l * l) - 1.0);
+/// ```
+pub const MITER_LIMIT: u32 = 4;
+
+/// Widths above this are drawn as this width.
+const MAX_WIDTH: u32 = 65535;
+
+/// The points a stroke goes through, in raw units.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Outline<'a> {
+    /// Pixel centres.
+    Points(&'a [Point]),
+    /// Subpixel vertices.
+    Vertices(&'a [Vertex]),
+}
+
+impl Outline<'_> {
+    fn len(&self) -> usize {
+        match self {
+            Self::Points(p) => p.len(),
+            Self::Vertices(v) => v.len(),
+        }
+    }
+
+    /// Point `k` (`k < len`) in raw units.
+    fn at(&self, k: usize) -> Pt {
+        match self {
+            Self::Points(p) => p.get(k).map_or((0, 0), |p| {
+                (i128::from(p.x) * 4096 + 2048, i128::from(p.y) * 4096 + 2048)
+            }),
+            Self::Vertices(v) => v.get(k).map_or((0, 0), |v| {
+                let (x, y) = v.raw();
+                (i128::from(x), i128::from(y))
+            }),
+        }
+    }
+}
+
+/// A stroke ready to rasterize.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Stroke<'a> {
+    outline: Outline<'a>,
+    /// Whether the last point joins the first (through a segment from it
+    /// to the first, unless they are equal).
+    closed: bool,
+    width: i128,
+    join: Join,
+}
+
+impl<'a> Stroke<'a> {
+    /// A stroke of `width` (at least 1; over 65535 drawn as 65535).
+    pub fn new(outline: Outline<'a>, closed: bool, width: u32, join: Join) -> Self {
+        Self {
+            outline,
+            closed,
+            width: i128::from(width.clamp(1, MAX_WIDTH)),
+            join,
+        }
+    }
+
+    /// The segments `k -> k + 1` (wrapping when closed) that have length.
+    fn segment(&self, k: usize) -> Option<Segment> {
+        let n = self.outline.len();
+        let next = if k + 1 == n { 0 } else { k + 1 };
+        let (a, b) = (self.outline.at(k), self.outline.at(next));
+        (a != b).then_some(Segment { a, b })
+    }
+
+    fn segment_count(&self) -> usize {
+        let n = self.outline.len();
+        if self.closed {
+            n
+        } else {
+            n.saturating_sub(1)
+        }
+    }
+
+    /// Writes the stroke's pixels into `sink`, each once.
+    pub fn draw<C: Copy, S: SpanSink<C>>(&self, color: C, sink: &mut S) -> Result<(), S::Error> {
+        let clip = Bounds::of(&sink.bounds());
+        let Some(rows) = self.rows(&clip) else {
+            return Ok(());
+        };
+        let ends = self.ends();
+        let mut offsets = Offsets::new();
+        for j in rows {
+            let Ok(y) = i32::try_from(j) else {
+                break;
+            };
+            // |j| < 2^32: the sample fits i64.
+            let sample = j * 4096 + 2048;
+            let py = i128::from(sample);
+            row::union(
+                |f| {
+                    self.for_each_piece(py, ends, &mut offsets, &mut |piece: &Piece| {
+                        if let Some((lo, hi)) = row::interval(piece, sample) {
+                            f(lo.clamp(clip.x0, clip.x1), hi.clamp(clip.x0, clip.x1));
+                        }
+                    })
+                },
+                |x0, x1| emit(sink, y, x0, x1, color),
+            )?;
+        }
+        Ok(())
+    }
+
+    /// The first and last segments with length; `None` if there are none.
+    fn ends(&self) -> Option<(usize, usize)> {
+        let count = self.segment_count();
+        let first = (0..count).find(|&k| self.segment(k).is_some())?;
+        let last = (0..count).rev().find(|&k| self.segment(k).is_some())?;
+        Some((first, last))
+    }
+
+    /// How far (raw units) any piece reaches from the points: a miter tip
+    /// is within `2 w` of its joint (within [`MITER_LIMIT`]), a corner
+    /// within `w / 2 + 1/2`, a square's corner within `w / sqrt(2)`.
+    fn reach(&self) -> i128 {
+        4096 * 2 * self.width + 8192
+    }
+
+    /// The rows of `clip` the stroke can light.
+    fn rows(&self, clip: &Bounds) -> Option<core::ops::Range<i64>> {
+        let n = self.outline.len();
+        let (lo, hi) = (0..n)
+            .map(|k| self.outline.at(k).1)
+            .fold((i128::MAX, i128::MIN), |(lo, hi), y| (lo.min(y), hi.max(y)));
+        if lo > hi {
+            return None;
+        }
+        let first = -((-(lo - self.reach() - 2048)).div_euclid(4096));
+        let last = (hi + self.reach() - 2048).div_euclid(4096);
+        let first = i64::try_from(first.max(clip.y0.into())).ok()?;
+        let end = i64::try_from((last + 1).min(clip.y1.into())).ok()?;
+        (first < end).then_some(first..end)
+    }
+
+    /// Calls `f` with every piece that can cross the row sample `py`.
+    fn for_each_piece(
+        &self,
+        py: i128,
+        ends: Option<(usize, usize)>,
+        offsets: &mut Offsets,
+        f: &mut dyn FnMut(&Piece),
+    ) {
+        let w = self.width;
+        let Some((first, last)) = ends else {
+            let p = self.outline.at(0);
+            if (py - p.1).abs() <= self.reach() {
+                pieces::square(p, w, f);
+            }
+            return;
+        };
+        let near =
+            |y0: i128, y1: i128, reach: i128| py >= y0.min(y1) - reach && py <= y0.max(y1) + reach;
+        let open = !self.closed;
+        let side = 2048 * w + 4096;
+        let mut prev: Option<(usize, Segment)> = None;
+        for k in first..=last {
+            let Some(seg) = self.segment(k) else {
+                continue;
+            };
+            if near(seg.a.1, seg.b.1, side) {
+                let n = offsets.get(k, &seg, w);
+                let extend = |end: usize| {
+                    if open && k == end {
+                        seg.extension()
+                    } else {
+                        (0, 0)
+                    }
+                };
+                let (start, end) = (extend(first), extend(last));
+                seg.piece(n, start, end, f);
+            }
+            if let Some(p) = prev {
+                self.join_at(py, p, (k, seg), offsets, f);
+            }
+            prev = Some((k, seg));
+        }
+        if self.closed {
+            if let (Some(p), Some(s)) = (prev, self.segment(first)) {
+                self.join_at(py, p, (first, s), offsets, f);
+            }
+        }
+    }
+
+    /// The join where segment `s0` ends and `s1` starts (with their
+    /// indices), if it can cross `py`.
+    fn join_at(
+        &self,
+        py: i128,
+        (k0, s0): (usize, Segment),
+        (k1, s1): (usize, Segment),
+        offsets: &mut Offsets,
+        f: &mut dyn FnMut(&Piece),
+    ) {
+        let p = s1.a;
+        if (py - p.1).abs() > self.reach() {
+            return;
+        }
+        let n0 = offsets.get(k0, &s0, self.width);
+        let n1 = offsets.get(k1, &s1, self.width);
+        let d0 = (s0.b.0 - s0.a.0, s0.b.1 - s0.a.1);
+        pieces::join(p, n0, d0, n1, self.width, self.join, f);
+    }
+}
+
+/// Segments whose offsets are kept between rows.
+const CACHED: usize = 64;
+
+/// The offsets `n` of recently used segments, by index modulo [`CACHED`],
+/// so that a segment crossing many rows takes its square roots once (for
+/// up to `CACHED` segments). 1 KiB on the stack: the components fit `i32`
+/// (`|n| <= 2048 * 65535 < 2^27`).
+#[derive(Debug)]
+struct Offsets {
+    entries: [(usize, [i32; 2]); CACHED],
+}
+
+impl Offsets {
+    fn new() -> Self {
+        Self {
+            entries: [(usize::MAX, [0; 2]); CACHED],
+        }
+    }
+
+    /// The offset `n` of segment `k`.
+    fn get(&mut self, k: usize, seg: &Segment, w: i128) -> Pt {
+        let slot = &mut self.entries[k % CACHED];
+        if slot.0 != k {
+            let n = seg.normal(w);
+            let c = |v: i128| i32::try_from(v).unwrap_or_default();
+            *slot = (k, [c(n.0), c(n.1)]);
+        }
+        (i128::from(slot.1[0]), i128::from(slot.1[1]))
+    }
+}
+
+/// Writes the pixels `x0..x1` of row `y` (inside the sink's bounds).
+fn emit<C: Copy, S: SpanSink<C>>(
+    sink: &mut S,
+    y: i32,
+    x0: i64,
+    x1: i64,
+    color: C,
+) -> Result<(), S::Error> {
+    let (Ok(x_start), Ok(len)) = (i32::try_from(x0), u32::try_from(x1 - x0)) else {
+        return Ok(());
+    };
+    match i32::try_from(x1) {
+        Ok(x_end) => sink.fill_span(Span { y, x_start, x_end }, color),
+        // A span ending past i32::MAX, which a `Span` cannot hold.
+        Err(_) => sink.fill_rect(
+            &Rectangle::new(Point::new(x_start, y), Size::new(len, 1)),
+            color,
+        ),
+    }
+}

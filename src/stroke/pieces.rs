@@ -1,0 +1,292 @@
+//! The convex pieces a stroke is the union of: one parallelogram per
+//! segment and, at each joint, the join's triangles or disk sector.
+//!
+//! A right turn at `P` (y down), the join on the outer side:
+//!
+//! ```text
+//!                   c0 +-----+ M      bevel: P, c0, c1
+//!                      |  \  |        tip:   c0, M, c1 (Join::Miter)
+//!   seg 0 ---------> P +-----+ c1     c0 = P + s n0, c1 = P + s n1
+//!                      |
+//!                      v seg 1
+//! ```
+//!
+//! A segment from `a` to `b` with direction `d` has the offsets
+//!
+//! ```text
+//! n = (-d.y, d.x) w / (2 |d|),   e = d / (2 |d|)   (half a pixel along d)
+//! ```
+//!
+//! each component rounded to the nearest raw unit (exactly, with an
+//! integer square root, as thick lines do), and its piece is the
+//! parallelogram `a + n, b + n, b - n, a - n`; the ends of an open
+//! stroke are moved out by `e` (butt caps half a pixel beyond the end
+//! pixels' centres). Consecutive pieces share the corners `P + n` and
+//! `P - n` exactly, so they meet along the line through the joint `P`.
+//!
+//! **Which side is outside.** Near `P`, segment 0's piece is the half-plane
+//! behind the line through `P` along `n0` and segment 1's the half-plane
+//! ahead of the line along `n1`; what they leave uncovered is the cone
+//! between the rays `s n0` and `s n1` with `s = -sign(cross(n0, n1))`
+//! (since `cross(n, d) < 0` for every segment, rounding included). It is
+//! decided on the rounded offsets themselves, so the join fills exactly
+//! the cone the pieces leave, however close to straight or to a reversal
+//! the turn is. Parallel offsets leave nothing (a straight joint) or, in
+//! the opposite direction (a full reversal), the half-plane ahead.
+
+use super::{Join, MITER_LIMIT};
+
+/// A point in raw 20.12 units.
+pub(crate) type Pt = (i128, i128);
+
+fn cross(u: Pt, v: Pt) -> i128 {
+    u.0 * v.1 - u.1 * v.0
+}
+
+fn add(u: Pt, v: Pt) -> Pt {
+    (u.0 + v.0, u.1 + v.1)
+}
+
+fn sub(u: Pt, v: Pt) -> Pt {
+    (u.0 - v.0, u.1 - v.1)
+}
+
+/// The open half-plane `o cross(d, p - a) > 0` (`o` is 1 or -1, `d` not
+/// zero), in raw units: every piece's coordinates lie below `2^46` in
+/// magnitude (module `row`), so they are stored in `i64`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Plane {
+    pub a: (i64, i64),
+    pub d: (i64, i64),
+    pub o: i8,
+}
+
+/// A convex piece: the intersection of up to four half-planes and, for a
+/// round join, a disk (centre, squared radius).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Piece {
+    planes: [Plane; 4],
+    count: usize,
+    pub disk: Option<((i64, i64), i64)>,
+}
+
+/// `p` in `i64`; `None` never happens for a stroke's points (below
+/// `2^46`).
+fn narrow(p: Pt) -> Option<(i64, i64)> {
+    Some((i64::try_from(p.0).ok()?, i64::try_from(p.1).ok()?))
+}
+
+impl Piece {
+    /// The half-planes.
+    pub fn planes(&self) -> &[Plane] {
+        &self.planes[..self.count]
+    }
+
+    /// Calls `f` with the convex polygon through `v` (3 or 4 vertices in
+    /// order, either winding), unless it has no area. (Built in place and
+    /// lent: a piece is 200 bytes, not worth copying per row.)
+    #[inline(always)]
+    pub fn polygon(v: &[Pt], f: &mut dyn FnMut(&Piece)) {
+        let mut piece = Self::empty();
+        if piece.set_polygon(v).is_some() {
+            f(&piece);
+        }
+    }
+
+    /// Makes this empty piece the polygon through `v`; `None` if it has
+    /// no area.
+    #[inline(always)]
+    fn set_polygon(&mut self, v: &[Pt]) -> Option<()> {
+        let first = *v.first()?;
+        // Twice the area, from the first vertex.
+        let area: i128 = v
+            .windows(2)
+            .skip(1)
+            .map(|w| cross(sub(w[0], first), sub(w[1], first)))
+            .sum();
+        let o = area.signum() as i8;
+        if o == 0 {
+            return None;
+        }
+        let next = v.iter().skip(1).chain(Some(&first));
+        for (&from, &to) in v.iter().zip(next) {
+            let d = sub(to, from);
+            if d != (0, 0) {
+                self.push(Plane {
+                    a: narrow(from)?,
+                    d: narrow(d)?,
+                    o,
+                });
+            }
+        }
+        Some(())
+    }
+
+    /// The disk of centre `c` and squared radius `r2` cut by the
+    /// half-planes through `c` along `d` with sides `o`.
+    fn sector(c: Pt, r2: i128, planes: &[(Pt, i128)], f: &mut dyn FnMut(&Piece)) {
+        let mut piece = Self::empty();
+        if piece.set_sector(c, r2, planes).is_some() {
+            f(&piece);
+        }
+    }
+
+    fn set_sector(&mut self, c: Pt, r2: i128, planes: &[(Pt, i128)]) -> Option<()> {
+        let c = narrow(c)?;
+        for &(d, o) in planes {
+            self.push(Plane {
+                a: c,
+                d: narrow(d)?,
+                o: o.signum() as i8,
+            });
+        }
+        self.disk = Some((c, i64::try_from(r2).ok()?));
+        Some(())
+    }
+
+    #[inline(always)]
+    fn empty() -> Self {
+        let none = Plane {
+            a: (0, 0),
+            d: (1, 0),
+            o: 1,
+        };
+        Self {
+            planes: [none; 4],
+            count: 0,
+            disk: None,
+        }
+    }
+
+    #[inline(always)]
+    fn push(&mut self, plane: Plane) {
+        if let Some(slot) = self.planes.get_mut(self.count) {
+            *slot = plane;
+            self.count += 1;
+        }
+    }
+}
+
+/// `round(a / sqrt(len2))` (`len2 > 0`, half up), in raw units: with `t =
+/// floor(2 a / sqrt(len2)) = isqrt(floor(4 a^2 / len2))`, the nearest
+/// integer is `ceil(t / 2)`. `a < 2^59`, so `4 a^2 < 2^120`.
+fn div_sqrt(a: u128, len2: u128) -> i128 {
+    // In 64 bits when it fits (any stroke on a screen): much cheaper.
+    let t = match (u64::try_from(4 * a * a), u64::try_from(len2)) {
+        (Ok(n), Ok(d)) => u128::from((n / d).isqrt()),
+        _ => (4 * a * a / len2).isqrt(),
+    };
+    i128::try_from(t.div_ceil(2)).unwrap_or_default()
+}
+
+/// `round(n / d)` for `d > 0`, half up.
+fn round_div(n: i128, d: i128) -> i128 {
+    (2 * n + d).div_euclid(2 * d)
+}
+
+/// A segment `a -> b` (raw units, `a != b`) of a stroke `w` px wide.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Segment {
+    pub a: Pt,
+    pub b: Pt,
+}
+
+impl Segment {
+    /// The offset `n` (module docs) for width `w <= 65535`.
+    pub fn normal(&self, w: i128) -> Pt {
+        let scaled = self.scaler();
+        (-scaled(1, 2048 * w), scaled(0, 2048 * w))
+    }
+
+    /// The offset `e`, half a pixel along the segment.
+    pub fn extension(&self) -> Pt {
+        let scaled = self.scaler();
+        (scaled(0, 2048), scaled(1, 2048))
+    }
+
+    /// `scaled(i, f)`: component `i` of the direction times `f / |d|`,
+    /// rounded to the nearest raw unit (half away from zero).
+    ///
+    /// A ratio of the direction, so it is first divided by the largest
+    /// power of two dividing both components: a direction between pixel
+    /// centres (a multiple of 4096) becomes one between `i32` pixels,
+    /// below `2^32` a component, as is any difference of `Vertex`
+    /// coordinates. Then `|d| f < 2^32 * 2048 * 65535 < 2^59`.
+    fn scaler(&self) -> impl Fn(usize, i128) -> i128 {
+        let d = sub(self.b, self.a);
+        let shift = (d.0 | d.1).trailing_zeros().min(127);
+        let d = [d.0 >> shift, d.1 >> shift];
+        let len2 = (d[0] * d[0] + d[1] * d[1]).unsigned_abs();
+        move |i, f| {
+            let c = d[i & 1];
+            c.signum() * div_sqrt(c.unsigned_abs() * f.unsigned_abs(), len2)
+        }
+    }
+
+    /// The segment's parallelogram with offset `n`, its start moved back
+    /// by `start` and its end forward by `end` (each `e` or zero).
+    #[inline(always)]
+    pub fn piece(&self, n: Pt, start: Pt, end: Pt, f: &mut dyn FnMut(&Piece)) {
+        let (a, b) = (sub(self.a, start), add(self.b, end));
+        Piece::polygon(&[add(a, n), add(b, n), sub(b, n), sub(a, n)], f);
+    }
+}
+
+/// The `w x w` square around `p` that a stroke of no length draws, as a
+/// zero-length thick line does.
+pub(crate) fn square(p: Pt, w: i128, f: &mut dyn FnMut(&Piece)) {
+    let r = 2048 * w;
+    let corners = [
+        (p.0 - r, p.1 + r),
+        (p.0 + r, p.1 + r),
+        (p.0 + r, p.1 - r),
+        (p.0 - r, p.1 - r),
+    ];
+    Piece::polygon(&corners, f);
+}
+
+/// Calls `f` with the pieces of the join at `p` between a segment with
+/// offset `n0` and direction `d0` and the next one, with offset `n1`, for
+/// a stroke `w` px wide.
+///
+/// - Bevel: the triangle `P, P + s n0, P + s n1`.
+/// - Miter: the bevel and the tip triangle `P + s n0, M, P + s n1`, while
+///   `cos(turn) >= 2 / L^2 - 1` for `L =` [`MITER_LIMIT`] (tested on the
+///   offsets: `L^2 n0.n1 >= (2 - L^2) r^2`, `r = w / 2`), else the bevel
+///   alone. `M = P + s (n0 + n1) r^2 / (r^2 + n0.n1)`, the offset lines'
+///   crossing for exact offsets, rounded to a raw unit. Two triangles
+///   rather than one quadrilateral: the tip's rounding can never dent the
+///   bevel.
+/// - Round: the disk of radius `r` around `P`, exactly, cut to the cone
+///   between the rays `s n0` and `s n1` (after a full reversal, to the
+///   half-plane ahead of the first segment).
+pub(crate) fn join(p: Pt, n0: Pt, d0: Pt, n1: Pt, w: i128, kind: Join, f: &mut dyn FnMut(&Piece)) {
+    let r2 = (2048 * w) * (2048 * w);
+    let c = cross(n0, n1);
+    let dot = n0.0 * n1.0 + n0.1 * n1.1;
+    if c == 0 {
+        if dot < 0 && kind == Join::Round {
+            Piece::sector(p, r2, &[(n0, cross(n0, d0))], f);
+        }
+        return;
+    }
+    let s = -c.signum();
+    let (u0, u1) = ((s * n0.0, s * n0.1), (s * n1.0, s * n1.1));
+    let (c0, c1) = (add(p, u0), add(p, u1));
+    if kind == Join::Round {
+        // cross(u0, u1) = c: the cone is on u1's side of u0 and u0's of u1.
+        Piece::sector(p, r2, &[(u0, c), (u1, -c)], f);
+        return;
+    }
+    Piece::polygon(&[p, c0, c1], f);
+    let l2 = i128::from(MITER_LIMIT) * i128::from(MITER_LIMIT);
+    if kind == Join::Miter && l2 * dot >= (2 - l2) * r2 {
+        // r^2 + n0.n1 >= 2 r^2 / L^2 > 0.
+        let den = r2 + dot;
+        let m = (
+            p.0 + round_div((u0.0 + u1.0) * r2, den),
+            p.1 + round_div((u0.1 + u1.1) * r2, den),
+        );
+        Piece::polygon(&[c0, m, c1], f);
+    }
+}
