@@ -122,8 +122,15 @@ fn bands(c: &mut Criterion) {
         group.bench_function(BenchmarkId::new("bands", 32), |b| {
             b.iter(|| banded(&list, height, &mut b32))
         });
-        let mut b240 = Box::new([Framebuffer::<Rgb565Le, 320, 240, { buffer_size::<Rgb565Le>(320, 240) }>::new()]);
-        group.bench_function(BenchmarkId::new("bands", 240), |b| b.iter(|| banded(&list, height, &mut b240)));
+        let mut b240 = Box::new([Framebuffer::<
+            Rgb565Le,
+            320,
+            240,
+            { buffer_size::<Rgb565Le>(320, 240) },
+        >::new()]);
+        group.bench_function(BenchmarkId::new("bands", 240), |b| {
+            b.iter(|| banded(&list, height, &mut b240))
+        });
         group.finish();
     }
 }

@@ -236,13 +236,6 @@ impl fmt::Display for DisplayListFull {
 
 impl core::error::Error for DisplayListFull {}
 
-/// A command with the rows it may write.
-#[derive(Debug, Clone, PartialEq)]
-struct Entry<'a, C, const P: usize> {
-    rows: Range<i32>,
-    command: Command<'a, C, P>,
-}
-
 /// The drawing commands of a frame, up to `N` of them, in fixed storage:
 /// drawn in order on any [`DrawTarget`] (it is a [`Drawable`]), or band
 /// by band ([`render_bands`](Self::render_bands)) so that a frame needs
@@ -285,13 +278,17 @@ struct Entry<'a, C, const P: usize> {
 /// ```
 #[derive(Debug, Clone)]
 pub struct DisplayList<'a, C, const N: usize, const P: usize = 32> {
-    entries: heapless::Vec<Entry<'a, C, P>, N>,
+    commands: heapless::Vec<Command<'a, C, P>, N>,
+    /// The rows each command may write, `start..end`, apart from the
+    /// commands so that a band's scan for its commands reads 8 bytes each.
+    rows: heapless::Vec<(i32, i32), N>,
 }
 
 impl<C, const N: usize, const P: usize> Default for DisplayList<'_, C, N, P> {
     fn default() -> Self {
         Self {
-            entries: heapless::Vec::new(),
+            commands: heapless::Vec::new(),
+            rows: heapless::Vec::new(),
         }
     }
 }
@@ -310,7 +307,8 @@ impl<'a, C: PixelColor, const N: usize, const P: usize> DisplayList<'a, C, N, P>
     /// ```
     pub const fn new() -> Self {
         Self {
-            entries: heapless::Vec::new(),
+            commands: heapless::Vec::new(),
+            rows: heapless::Vec::new(),
         }
     }
 
@@ -334,9 +332,13 @@ impl<'a, C: PixelColor, const N: usize, const P: usize> DisplayList<'a, C, N, P>
     /// ```
     pub fn push(&mut self, command: Command<'a, C, P>) -> Result<(), DisplayListFull> {
         let rows = command.rows();
-        self.entries
-            .push(Entry { rows, command })
-            .map_err(|_| DisplayListFull { capacity: N })
+        if self.commands.is_full() {
+            return Err(DisplayListFull { capacity: N });
+        }
+        // Both vectors have the same length: both have room.
+        let _ = self.commands.push(command);
+        let _ = self.rows.push((rows.start, rows.end));
+        Ok(())
     }
 
     /// The number of commands in the list.
@@ -355,7 +357,7 @@ impl<'a, C: PixelColor, const N: usize, const P: usize> DisplayList<'a, C, N, P>
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn len(&self) -> usize {
-        self.entries.len()
+        self.commands.len()
     }
 
     /// Whether the list has no command.
@@ -369,7 +371,7 @@ impl<'a, C: PixelColor, const N: usize, const P: usize> DisplayList<'a, C, N, P>
     /// assert!(DisplayList::<BinaryColor, 1>::new().is_empty());
     /// ```
     pub fn is_empty(&self) -> bool {
-        self.entries.is_empty()
+        self.commands.is_empty()
     }
 
     /// Removes every command.
@@ -387,7 +389,8 @@ impl<'a, C: PixelColor, const N: usize, const P: usize> DisplayList<'a, C, N, P>
     /// # Ok::<(), embedded_raster::band::DisplayListFull>(())
     /// ```
     pub fn clear(&mut self) {
-        self.entries.clear();
+        self.commands.clear();
+        self.rows.clear();
     }
 
     /// The commands, in drawing order.
@@ -404,7 +407,7 @@ impl<'a, C: PixelColor, const N: usize, const P: usize> DisplayList<'a, C, N, P>
     /// # Ok::<(), embedded_raster::band::DisplayListFull>(())
     /// ```
     pub fn commands(&self) -> impl Iterator<Item = &Command<'a, C, P>> {
-        self.entries.iter().map(|e| &e.command)
+        self.commands.iter()
     }
 }
 
@@ -421,11 +424,10 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
     where
         T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error>,
     {
-        for entry in &self.entries {
-            if entry.rows.start >= rows.end || rows.start >= entry.rows.end {
-                continue;
+        for (&(start, end), command) in self.rows.iter().zip(&self.commands) {
+            if start < rows.end && rows.start < end {
+                command.draw_on(target, depth)?;
             }
-            entry.command.draw_on(target, depth)?;
         }
         Ok(())
     }
@@ -563,33 +565,43 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
         T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error> + OriginDimensions,
     {
         let rows = band.rows();
-        for (index, entry) in self.entries.iter().enumerate() {
-            if entry.rows.start >= rows.end || rows.start >= entry.rows.end {
+        let commands = self.rows.iter().zip(&self.commands).enumerate();
+        for (index, (&(start, end), command)) in commands {
+            if start >= rows.end || rows.start >= end {
                 continue;
             }
-            let Command::Triangle(t) = &entry.command else {
-                entry.command.draw_on(band, depth)?;
+            let Command::Triangle(t) = command else {
+                command.draw_on(band, depth)?;
                 continue;
             };
-            let color = t.color;
-            let mut emit = |span| band.fill_span(span, color);
             if let Some(walk) = walks.of(index) {
                 // Set up in an earlier band: continue.
-                if walk.emit_until(rows.end, &mut emit)? {
+                if walk.emit_until(rows.end, &mut band.span_writer(t.color))? {
                     walks.finish(index);
                 }
                 continue;
             }
-            // The first band the command meets sets it up.
-            let first = entry.rows.start >= rows.start || rows.start == 0;
-            match first.then(|| TriangleRows::new(&t.triangle.vertices, screen)) {
-                Some(Some(mut walk)) => {
-                    if !walk.emit_until(rows.end, &mut emit)? {
-                        walks.keep(index, walk);
+            // The first band the command meets sets it up, and keeps the
+            // walk only if the triangle goes on below the band.
+            let first = start >= rows.start || rows.start == 0;
+            if first && end <= rows.end {
+                t.draw_spans(band)?;
+                continue;
+            }
+            // Set up in a free slot, where it stays (walks are not moved).
+            let slot = if first {
+                walks.start(index, t, screen)
+            } else {
+                None
+            };
+            match slot {
+                Some(walk) => {
+                    if walk.emit_until(rows.end, &mut band.span_writer(t.color))? {
+                        walks.finish(index);
                     }
                 }
-                // Nothing to light, on the 64-bit path, or not kept.
-                _ => t.draw_spans(band)?,
+                // No free slot, nothing to light, or on the 64-bit path.
+                None => t.draw_spans(band)?,
             }
         }
         Ok(())
@@ -600,7 +612,7 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
 const WALKS: usize = 32;
 
 /// Triangle walks kept between bands, found by command index: slots
-/// that do not move (a walk is about 120 bytes), a slot number per
+/// that do not move (a walk is 120 to 130 bytes), a slot number per
 /// command, and the free slots.
 struct Walks<const N: usize> {
     /// Per command, its slot plus one, or 0.
@@ -625,15 +637,23 @@ impl<const N: usize> Walks<N> {
         self.slots.get_mut(slot)?.as_mut()
     }
 
-    /// Keeps `walk` for command `index`, if a slot is free.
-    fn keep(&mut self, index: usize, walk: TriangleRows) {
-        if let (Some(mark), Some(&slot)) = (self.slot_of.get_mut(index), self.free.last()) {
-            if let Some(place) = self.slots.get_mut(usize::from(slot)) {
-                *place = Some(walk);
-                *mark = slot + 1;
-                self.free.pop();
-            }
-        }
+    /// Sets up the walk of triangle `t` inside `screen` for command
+    /// `index` in a free slot, and returns it; `None` (nothing kept) if no
+    /// slot is free or the triangle has no 32-bit walk.
+    fn start<C>(
+        &mut self,
+        index: usize,
+        t: &FilledTriangle<C>,
+        screen: &Rectangle,
+    ) -> Option<&mut TriangleRows> {
+        let mark = self.slot_of.get_mut(index)?;
+        let &slot = self.free.last()?;
+        let place = self.slots.get_mut(usize::from(slot))?;
+        *place = TriangleRows::new(&t.triangle.vertices, screen);
+        let walk = place.as_mut()?;
+        self.free.pop();
+        *mark = slot + 1;
+        Some(walk)
     }
 
     /// Drops the walk of command `index`, freeing its slot.

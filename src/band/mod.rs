@@ -155,12 +155,29 @@ impl<'a, T: OriginDimensions> Band<'a, T> {
         );
         Some((moved, skipped))
     }
+}
 
-    /// `p` in the target's coordinates, if it is in the band's rows.
-    fn point_to_target(&self, p: Point) -> Option<Point> {
-        self.rows()
-            .contains(&p.y)
-            .then(|| Point::new(p.x, p.y - self.top))
+impl<T> Band<'_, T> {
+    /// Writes spans of `color` into the target, each moved up by `top`
+    /// and dropped unless it is in the band's rows: `fill_span` with the
+    /// band's fields copied into the closure, so that a span loop keeps
+    /// them in registers across the target's stores.
+    #[inline]
+    pub(crate) fn span_writer<'s, C: Copy + 's>(
+        &'s mut self,
+        color: C,
+    ) -> impl FnMut(Span) -> Result<(), <T as SpanSink<C>>::Error> + 's
+    where
+        T: SpanSink<C>,
+    {
+        let (top, height, target) = (self.top, self.height, &mut *self.target);
+        move |span: Span| match span.y.checked_sub(top) {
+            // In the band's rows, `span.y - top` is in `0..height`.
+            Some(y) if y >= 0 && y.unsigned_abs() < height => {
+                target.fill_span(Span { y, ..span }, color)
+            }
+            _ => Ok(()),
+        }
     }
 }
 
@@ -222,28 +239,14 @@ impl<T: DrawTarget + OriginDimensions> DrawTarget for Band<'_, T> {
 impl<C: Copy, T: SpanSink<C> + OriginDimensions> SpanSink<C> for Band<'_, T> {
     type Error = T::Error;
 
+    /// The band's area: the target must take spans anywhere in its size
+    /// (as every sink whose bounds are its size does).
     fn bounds(&self) -> Rectangle {
-        // What the target has, in the band's rows: shapes clip to it
-        // before they step.
-        let own = Bounds::of(&self.target.bounds());
-        let rows = Bounds::of(&self.area());
-        let top = i64::from(self.top);
-        let moved = Bounds {
-            y0: own.y0 + top,
-            y1: own.y1 + top,
-            ..own
-        };
-        match moved.intersect(rows) {
-            Some(b) => b.to_rectangle(),
-            None => Rectangle::new(Point::new(0, self.top), Size::zero()),
-        }
+        self.area()
     }
 
     fn fill_span(&mut self, span: Span, color: C) -> Result<(), Self::Error> {
-        match self.point_to_target(Point::new(span.x_start, span.y)) {
-            Some(p) => self.target.fill_span(Span { y: p.y, ..span }, color),
-            None => Ok(()),
-        }
+        self.span_writer(color)(span)
     }
 
     fn fill_column(&mut self, top: Point, len: u32, color: C) -> Result<(), Self::Error> {
