@@ -538,7 +538,13 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
     {
         let width = buffers.first().map_or(0, |b| b.size().width);
         let screen = Rectangle::new(Point::zero(), Size::new(width, height));
-        let mut walks = Walks::<N>::new();
+        // Built in place: a walk table is a few KiB of stack.
+        let mut walks = Walks::<N> {
+            slot_of: [0; N],
+            slots: [None; WALKS],
+            free: heapless::Vec::new(),
+        };
+        walks.free_all();
         render_in_bands(
             height,
             buffers,
@@ -609,7 +615,7 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
 }
 
 /// The most triangle walks kept from one band to the next.
-const WALKS: usize = 32;
+const WALKS: usize = 24;
 
 /// Triangle walks kept between bands, found by command index: slots
 /// that do not move (a walk is 120 to 130 bytes), a slot number per
@@ -622,12 +628,12 @@ struct Walks<const N: usize> {
 }
 
 impl<const N: usize> Walks<N> {
-    fn new() -> Self {
-        Self {
-            slot_of: [0; N],
-            slots: [const { None }; WALKS],
-            // Slots 0..WALKS, all free: `WALKS` fits the vector and `u8`.
-            free: (0..WALKS as u8).rev().collect(),
+    /// Marks every slot free.
+    fn free_all(&mut self) {
+        self.free.clear();
+        // Slots 0..WALKS: `WALKS` fits the vector and `u8`.
+        for slot in (0..WALKS as u8).rev() {
+            let _ = self.free.push(slot);
         }
     }
 

@@ -162,7 +162,6 @@ impl<T> Band<'_, T> {
     /// and dropped unless it is in the band's rows: `fill_span` with the
     /// band's fields copied into the closure, so that a span loop keeps
     /// them in registers across the target's stores.
-    #[inline]
     pub(crate) fn span_writer<'s, C: Copy + 's>(
         &'s mut self,
         color: C,
