@@ -14,7 +14,7 @@ use embedded_graphics_core::{
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+/// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
 /// use embedded_raster::Span;
 ///
 /// let span = Span { y: 3, x_start: 2, x_end: 6 };
@@ -79,7 +79,7 @@ impl Span {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::geometry::{Point, Size};
+    /// use embedded_graphics::geometry::{Point, Size};
     /// use embedded_raster::Span;
     ///
     /// let r = Span { y: 1, x_start: 0, x_end: 2 }.rect();

@@ -26,7 +26,7 @@ pub(crate) const ONE: i64 = 1 << SUBPIXEL_BITS;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::geometry::Point;
+/// use embedded_graphics::geometry::Point;
 /// use embedded_raster::Vertex;
 ///
 /// // From numbers: rounded to the nearest 1/4096, ties to even.

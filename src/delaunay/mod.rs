@@ -143,7 +143,7 @@ impl core::error::Error for DelaunayError {}
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 /// use embedded_raster::{delaunay::Delaunay, framebuffer::{buffer_size, Rgb565Le}, Framebuffer, Vertex};
 ///
 /// let points = [(2, 2), (60, 4), (30, 30), (5, 60), (58, 61), (33, 10)]

@@ -109,7 +109,7 @@
 //! # Examples
 //!
 //! ```
-//! use embedded_graphics_core::{pixelcolor::{Rgb565, RgbColor}, prelude::*, primitives::Rectangle};
+//! use embedded_graphics::{pixelcolor::{Rgb565, RgbColor}, prelude::*, primitives::Rectangle};
 //! use embedded_raster::framebuffer::{buffer_size, Framebuffer, Rgb565Be};
 //!
 //! let mut fb = Framebuffer::<Rgb565Be, 320, 240, { buffer_size::<Rgb565Be>(320, 240) }>::new();
@@ -212,7 +212,7 @@ pub const fn buffer_size<F: PixelFormat>(width: usize, height: usize) -> usize {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer};
 ///
 /// type Epaper = Framebuffer<BinaryMsb, 200, 200, { buffer_size::<BinaryMsb>(200, 200) }>;
@@ -254,7 +254,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
     /// use embedded_raster::{framebuffer::{buffer_size, Rgb565Le}, Framebuffer};
     ///
     /// static BLANK: Framebuffer<Rgb565Le, 8, 8, { buffer_size::<Rgb565Le>(8, 8) }> =
@@ -287,7 +287,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
     /// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
     ///
     /// let mut fb = Framebuffer::<Gray8Bytes, 2, 2, { buffer_size::<Gray8Bytes>(2, 2) }>::new();
@@ -304,7 +304,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
     /// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
     ///
     /// let mut fb = Framebuffer::<Gray8Bytes, 2, 2, { buffer_size::<Gray8Bytes>(2, 2) }>::new();
@@ -320,7 +320,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
     /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer};
     ///
     /// let mut fb = Framebuffer::<BinaryMsb, 10, 4, { buffer_size::<BinaryMsb>(10, 4) }>::new();
@@ -465,7 +465,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, Span, SpanSink};
 ///
 /// let mut fb = Framebuffer::<Gray8Bytes, 4, 2, { buffer_size::<Gray8Bytes>(4, 2) }>::new();
@@ -548,7 +548,7 @@ impl<F, const W: usize, const H: usize, const N: usize> OriginDimensions
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{image::GetPixel, pixelcolor::Gray8, prelude::*};
+/// use embedded_graphics::{image::GetPixel, pixelcolor::Gray8, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer};
 ///
 /// fn brightest<T: GetPixel<Color = Gray8>>(image: &T, points: &[Point]) -> Option<Gray8> {

@@ -81,7 +81,7 @@ fn step<T: Wide, const X_MAJOR: bool, E>(
 ///
 /// ```
 /// use core::convert::Infallible;
-/// use embedded_graphics_core::{geometry::{Point, Size}, pixelcolor::BinaryColor, primitives::Rectangle};
+/// use embedded_graphics::{geometry::{Point, Size}, pixelcolor::BinaryColor, primitives::Rectangle};
 /// use embedded_raster::{line::LinePixels, Line, Span, SpanDrawable, SpanSink};
 ///
 /// /// Records the pixels of the lines drawn into it.
@@ -157,7 +157,7 @@ impl LinePixels {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::Line;
     ///
     /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
@@ -178,7 +178,7 @@ impl LinePixels {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::Line;
     ///
     /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
@@ -199,7 +199,7 @@ impl LinePixels {
     ///
     /// ```
     /// use core::convert::Infallible;
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::Line;
     ///
     /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));

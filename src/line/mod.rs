@@ -85,7 +85,7 @@ use clip::Canonical;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+/// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
 /// use embedded_raster::Run;
 ///
 /// let run = Run { start: Point::new(2, 5), len: 3, vertical: true };
@@ -129,7 +129,7 @@ impl Run {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::geometry::{Point, Size};
+    /// use embedded_graphics::geometry::{Point, Size};
     /// use embedded_raster::Run;
     ///
     /// let r = Run { start: Point::new(-1, 0), len: 4, vertical: false }.rect();
@@ -149,7 +149,7 @@ impl Run {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::geometry::Point;
+    /// use embedded_graphics::geometry::Point;
     /// use embedded_raster::Run;
     ///
     /// let run = Run { start: Point::new(7, 1), len: 1, vertical: false };
@@ -170,7 +170,7 @@ impl Run {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::geometry::Point;
+    /// use embedded_graphics::geometry::Point;
     /// use embedded_raster::{Run, Span};
     ///
     /// let run = Run { start: Point::new(3, 9), len: 2, vertical: false };
@@ -230,7 +230,7 @@ impl Run {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
 /// use embedded_raster::{Line, LineAlgorithm};
 ///
 /// let styled = Line::new(Point::new(0, 0), Point::new(9, 3))
@@ -259,7 +259,7 @@ pub enum LineAlgorithm {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, Rgb565Le}, Framebuffer, Line};
 ///
 /// let mut fb = Framebuffer::<Rgb565Le, 64, 64, { buffer_size::<Rgb565Le>(64, 64) }>::new();
@@ -290,7 +290,7 @@ impl Line {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::geometry::Point;
+    /// use embedded_graphics::geometry::Point;
     /// use embedded_raster::Line;
     ///
     /// let line = Line::new(Point::new(i32::MIN, 0), Point::new(i32::MAX, 7));
@@ -306,7 +306,7 @@ impl Line {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::Line;
     ///
     /// let styled = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On);
@@ -330,7 +330,7 @@ impl Line {
     ///
     /// ```
     /// use core::convert::Infallible;
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::{Line, Run};
     ///
     /// // Slope 1/2: the ideal line crosses midpoints at odd x, where the
@@ -362,7 +362,7 @@ impl Line {
     ///
     /// ```
     /// use core::convert::Infallible;
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::{Line, LineAlgorithm};
     ///
     /// let clip = Rectangle::new(Point::zero(), Size::new(16, 16));
@@ -409,7 +409,7 @@ impl Line {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::Line;
     ///
     /// let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
@@ -508,7 +508,7 @@ impl RunSource for LineAlgorithm {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, Line};
 ///
 /// let mut fb = Framebuffer::<Gray8Bytes, 32, 32, { buffer_size::<Gray8Bytes>(32, 32) }>::new();
@@ -541,7 +541,7 @@ impl<C> StyledLine<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::Line;
     ///
     /// let styled = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On).stroke_width(4);
@@ -557,7 +557,7 @@ impl<C> StyledLine<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::{Line, LineAlgorithm};
     ///
     /// let styled = Line::new(Point::zero(), Point::new(5, 2)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive);
@@ -588,7 +588,7 @@ impl<C: PixelColor> SpanDrawable for StyledLine<C> {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Line, LineAlgorithm};
 ///
 /// let mut fb = Framebuffer::<BinaryMsb, 16, 16, { buffer_size::<BinaryMsb>(16, 16) }>::new();
@@ -621,7 +621,7 @@ impl<C> StyledLineVariant<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::{Line, LineAlgorithm};
     ///
     /// let s = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive).stroke_width(3);
@@ -637,7 +637,7 @@ impl<C> StyledLineVariant<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::{Line, LineAlgorithm};
     ///
     /// let s = Line::new(Point::zero(), Point::new(5, 2)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive).algorithm(LineAlgorithm::Dda);

@@ -33,7 +33,7 @@ use crate::{
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, Polyline};
 ///
 /// let mut fb = Framebuffer::<Gray8Bytes, 16, 16, { buffer_size::<Gray8Bytes>(16, 16) }>::new();
@@ -58,7 +58,7 @@ impl<'a> Polyline<'a> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::geometry::Point;
+    /// use embedded_graphics::geometry::Point;
     /// use embedded_raster::Polyline;
     ///
     /// let points = [Point::new(0, 0), Point::new(5, 5)];
@@ -73,7 +73,7 @@ impl<'a> Polyline<'a> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::Polyline;
     ///
     /// let points = [Point::zero(), Point::new(3, 1)];
@@ -97,7 +97,7 @@ impl<'a> Polyline<'a> {
     ///
     /// ```
     /// use core::convert::Infallible;
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::{LineAlgorithm, Polyline};
     ///
     /// // An L: 5 pixels across, 4 more down; the corner is lit once.
@@ -165,7 +165,7 @@ impl<'a> Polyline<'a> {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Polyline};
 ///
 /// let mut fb = Framebuffer::<BinaryMsb, 32, 32, { buffer_size::<BinaryMsb>(32, 32) }>::new();
@@ -197,7 +197,7 @@ impl<'a, C> StyledPolyline<'a, C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::Polyline;
     ///
     /// let points = [Point::zero(), Point::new(3, 1)];
@@ -216,7 +216,7 @@ impl<'a, C> StyledPolyline<'a, C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
     /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Join, Polyline};
     ///
     /// let mut fb = Framebuffer::<BinaryMsb, 16, 16, { buffer_size::<BinaryMsb>(16, 16) }>::new();
@@ -237,7 +237,7 @@ impl<'a, C> StyledPolyline<'a, C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::{LineAlgorithm, Polyline};
     ///
     /// let points = [Point::zero(), Point::new(3, 1)];
@@ -277,7 +277,7 @@ impl<C: PixelColor> SpanDrawable for StyledPolyline<'_, C> {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, LineAlgorithm, Polyline};
 ///
 /// let mut fb = Framebuffer::<BinaryMsb, 16, 16, { buffer_size::<BinaryMsb>(16, 16) }>::new();
@@ -311,7 +311,7 @@ impl<C> StyledPolylineVariant<'_, C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::{LineAlgorithm, Polyline};
     ///
     /// let points = [Point::zero(), Point::new(3, 1)];
@@ -330,7 +330,7 @@ impl<C> StyledPolylineVariant<'_, C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
     /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Join, Polyline};
     ///
     /// let mut fb = Framebuffer::<BinaryMsb, 16, 16, { buffer_size::<BinaryMsb>(16, 16) }>::new();
@@ -351,7 +351,7 @@ impl<C> StyledPolylineVariant<'_, C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::{LineAlgorithm, Polyline};
     ///
     /// let points = [Point::zero(), Point::new(3, 1)];

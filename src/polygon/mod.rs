@@ -135,7 +135,7 @@ impl core::error::Error for PolygonError {}
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, Rgb565Le}, FillRule, Framebuffer, Polygon, Vertex};
 ///
 /// let mut fb = Framebuffer::<Rgb565Le, 64, 64, { buffer_size::<Rgb565Le>(64, 64) }>::new();
@@ -242,7 +242,7 @@ impl<'a, const N: usize> Polygon<'a, N> {
     ///
     /// ```
     /// use core::convert::Infallible;
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::{FillRule, Polygon, Vertex};
     ///
     /// // A 4 x 2 px rectangle with a corner on a pixel corner.
@@ -301,7 +301,7 @@ impl<'a, const N: usize> Polygon<'a, N> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{FillRule, Polygon, Vertex};
     ///
     /// let v = [Vertex::from_raw(0, 0), Vertex::from_raw(4096, 0), Vertex::from_raw(0, 4096)];
@@ -324,7 +324,7 @@ impl<'a, const N: usize> Polygon<'a, N> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{Join, Polygon, Vertex};
     ///
     /// let v = [Vertex::from_raw(0, 0), Vertex::from_raw(4096, 0), Vertex::from_raw(0, 4096)];
@@ -373,7 +373,7 @@ impl<'a, const N: usize> Polygon<'a, N> {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, FillRule, Framebuffer, Polygon, Vertex};
 ///
 /// let mut fb = Framebuffer::<Gray8Bytes, 16, 16, { buffer_size::<Gray8Bytes>(16, 16) }>::new();
@@ -398,7 +398,7 @@ impl<'a, C, const N: usize> FilledPolygon<'a, C, N> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{FillRule, Polygon, Vertex};
     ///
     /// let v = [Vertex::from_raw(0, 0), Vertex::from_raw(4096, 0), Vertex::from_raw(0, 4096)];
@@ -464,7 +464,7 @@ impl<C: PixelColor, const N: usize> Drawable for FilledPolygon<'_, C, N> {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Polygon, Vertex};
 ///
 /// let mut fb = Framebuffer::<BinaryMsb, 32, 32, { buffer_size::<BinaryMsb>(32, 32) }>::new();
@@ -495,7 +495,7 @@ impl<C, const N: usize> StrokedPolygon<'_, C, N> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{Polygon, Vertex};
     ///
     /// let v = [Vertex::from_raw(0, 0), Vertex::from_raw(4096, 0), Vertex::from_raw(0, 4096)];
@@ -512,7 +512,7 @@ impl<C, const N: usize> StrokedPolygon<'_, C, N> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{Join, Polygon, Vertex};
     ///
     /// let v = [Vertex::from_raw(0, 0), Vertex::from_raw(4096, 0), Vertex::from_raw(0, 4096)];

@@ -40,7 +40,7 @@ use crate::{
 ///
 /// ```
 /// use core::convert::Infallible;
-/// use embedded_graphics_core::{geometry::{Point, Size}, pixelcolor::BinaryColor, primitives::Rectangle};
+/// use embedded_graphics::{geometry::{Point, Size}, pixelcolor::BinaryColor, primitives::Rectangle};
 /// use embedded_raster::{Span, SpanDrawable, SpanSink, Triangle};
 ///
 /// struct Counter(u32);
@@ -135,7 +135,7 @@ pub trait SpanSink<C> {
 /// straight into its rows.
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::{Rgb565, RgbColor}, prelude::*};
+/// use embedded_graphics::{pixelcolor::{Rgb565, RgbColor}, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, Rgb565Le}, Framebuffer, SpanDrawable, Triangle};
 ///
 /// let mut fb = Framebuffer::<Rgb565Le, 16, 16, { buffer_size::<Rgb565Le>(16, 16) }>::new();
@@ -160,7 +160,7 @@ pub trait SpanDrawable {
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;
-/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
 /// use embedded_raster::{DrawTargetSink, SpanSink, Span};
 ///
 /// let mut display = MockDisplay::<BinaryColor>::new();
@@ -185,7 +185,7 @@ impl<'a, D: DrawTarget> DrawTargetSink<'a, D> {
     ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
-    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
     /// use embedded_raster::{DrawTargetSink, SpanSink};
     ///
     /// let mut display = MockDisplay::<BinaryColor>::new();

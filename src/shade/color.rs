@@ -11,7 +11,7 @@ use embedded_graphics_core::pixelcolor::{
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics::pixelcolor::Rgb565;
 /// use embedded_raster::shade::ShadeColor;
 ///
 /// let c = Rgb565::new(31, 40, 2);
@@ -94,7 +94,7 @@ impl ShadeColor for BinaryColor {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{BinaryColor, Rgb888};
+/// use embedded_graphics::pixelcolor::{BinaryColor, Rgb888};
 /// use embedded_raster::shade::average_color;
 ///
 /// let c = average_color([Rgb888::new(255, 0, 10), Rgb888::new(0, 0, 10), Rgb888::new(0, 1, 11)]);

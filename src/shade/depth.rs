@@ -56,7 +56,7 @@ impl<'a> DepthBuffer<'a> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::geometry::Size;
+    /// use embedded_graphics::geometry::Size;
     /// use embedded_raster::shade::DepthBuffer;
     ///
     /// let mut storage = [0u16; 100];
@@ -198,7 +198,7 @@ impl<'a> DepthBuffer<'a> {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
 /// use embedded_raster::{
 ///     framebuffer::{buffer_size, Framebuffer, Gray8Bytes},
 ///     shade::DepthBuffer,
@@ -254,7 +254,7 @@ impl<C> GouraudTriangle<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
     /// use embedded_raster::{shade::DepthBuffer, Triangle};
     /// # use embedded_raster::framebuffer::{buffer_size, Framebuffer, Rgb565Le};
     /// # let mut fb = Framebuffer::<Rgb565Le, 8, 8, { buffer_size::<Rgb565Le>(8, 8) }>::new();

@@ -258,7 +258,7 @@ impl Triangle {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
+    /// use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
     /// use embedded_raster::Triangle;
     ///
     /// let shaded = Triangle::default().gouraud([Rgb888::RED, Rgb888::GREEN, Rgb888::BLUE]);
@@ -283,7 +283,7 @@ impl Triangle {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, Framebuffer, Rgb565Le}, Triangle};
 ///
 /// let mut fb = Framebuffer::<Rgb565Le, 16, 16, { buffer_size::<Rgb565Le>(16, 16) }>::new();
@@ -310,7 +310,7 @@ impl<C: ShadeColor> GouraudTriangle<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics::pixelcolor::Gray8;
     /// use embedded_raster::Triangle;
     ///
     /// let t = Triangle::default().gouraud([Gray8::new(0), Gray8::new(1), Gray8::new(1)]);
@@ -327,7 +327,7 @@ impl<C: ShadeColor> GouraudTriangle<C> {
     ///
     /// ```
     /// use core::convert::Infallible;
-    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
     /// use embedded_raster::{Triangle, Vertex};
     ///
     /// let v = |x: f32, y: f32| Vertex::try_from_num(x, y).unwrap();

@@ -124,7 +124,9 @@ struct Options {
 /// neither (nor any temporary file). Every
 /// error is reported as one line on `stderr` (followed by [`USAGE`] for a
 /// bad command line): `SCENE:LINE: message` for a bad scene,
-/// `PATH: message` for an I/O error.
+/// `PATH: message` for an I/O error. On success, one summary line goes to
+/// `stderr`: `render: wrote OUT.png: WxH, N primitives, N pixels written,
+/// rasterized in T ms`.
 ///
 /// # Examples
 ///
@@ -140,7 +142,8 @@ struct Options {
 /// let args = [scene.as_os_str(), "-o".as_ref(), png.as_os_str(), "--stats".as_ref()];
 /// assert_eq!(cli::run(args, &mut out, &mut err), cli::EXIT_OK);
 /// assert!(String::from_utf8_lossy(&out).starts_with(r#"{"primitives":1,"pixels_written":16,"#));
-/// assert!(err.is_empty());
+/// // One summary line on stderr.
+/// assert!(String::from_utf8_lossy(&err).starts_with("render: wrote "));
 /// assert!(png.exists());
 /// # std::fs::remove_file(&scene)?;
 /// # std::fs::remove_file(&png)?;

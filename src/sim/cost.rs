@@ -56,7 +56,7 @@ impl Command {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::prelude::*;
+    /// use embedded_graphics::prelude::*;
     /// use embedded_raster::sim::parse_scene;
     ///
     /// let scene = parse_scene("size 64 64\ntri 0.5 0.5 10 0.5 0.5 -524288 #ffffff\n")?;

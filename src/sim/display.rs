@@ -39,7 +39,7 @@ use crate::span::Span;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
+/// use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 /// use embedded_raster::sim::SimDisplay;
 ///
 /// let mut display = SimDisplay::new(8, 4, Rgb888::BLACK);
@@ -70,7 +70,7 @@ pub struct SimDisplay<C> {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
 /// use embedded_raster::sim::SimDisplay;
 ///
 /// let mut display = SimDisplay::new(4, 4, Gray8::BLACK);
@@ -112,7 +112,7 @@ impl<C: PixelColor> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let display = SimDisplay::new(128, 64, BinaryColor::Off);
@@ -137,7 +137,7 @@ impl<C: PixelColor> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let mut display = SimDisplay::new(2, 2, Rgb565::BLACK);
@@ -156,7 +156,7 @@ impl<C: PixelColor> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let mut display = SimDisplay::new(3, 3, Gray8::BLACK);
@@ -176,7 +176,7 @@ impl<C: PixelColor> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let display = SimDisplay::new(3, 2, BinaryColor::On);
@@ -191,7 +191,7 @@ impl<C: PixelColor> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let mut display = SimDisplay::new(2, 2, BinaryColor::Off);
@@ -209,7 +209,7 @@ impl<C: PixelColor> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let mut display = SimDisplay::new(4, 4, Gray8::BLACK);
@@ -228,7 +228,7 @@ impl<C: PixelColor> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let mut display = SimDisplay::new(4, 4, Gray8::BLACK);
@@ -246,7 +246,7 @@ impl<C: PixelColor> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let mut display = SimDisplay::new(4, 4, Gray8::BLACK);
@@ -266,7 +266,7 @@ impl<C: PixelColor> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let mut display = SimDisplay::new(4, 4, Gray8::BLACK);
@@ -339,7 +339,7 @@ impl<C: PixelColor> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let mut display = SimDisplay::new(3, 1, Gray8::BLACK);
@@ -380,7 +380,7 @@ impl<C: PixelColor + Into<Rgb888>> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let display = SimDisplay::new(16, 8, Rgb565::BLUE);
@@ -403,7 +403,7 @@ impl<C: PixelColor + Into<Rgb888>> SimDisplay<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
     /// use embedded_raster::sim::SimDisplay;
     ///
     /// let path = std::env::temp_dir().join(format!("sim-doc-{}.png", std::process::id()));

@@ -13,7 +13,7 @@
 //! # Examples
 //!
 //! ```
-//! use embedded_graphics_core::{pixelcolor::Rgb888, prelude::*};
+//! use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 //! use embedded_raster::sim::{parse_scene, render_scene};
 //!
 //! // Two triangles sharing the diagonal make a square.

@@ -36,7 +36,7 @@ impl Command {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Rgb888, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
     /// use embedded_raster::sim::{parse_scene, SimDisplay};
     ///
     /// let scene = parse_scene("size 4 4\nrect 1 1 100 100 #00ff00")?;
@@ -82,7 +82,7 @@ impl Command {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Rgb888, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
     /// use embedded_raster::sim::{parse_scene, SimDisplay};
     /// use embedded_raster::{SubpixelPrecision, TriangleAlgorithm};
     ///
@@ -189,7 +189,7 @@ impl RenderStats {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Rgb888, prelude::*};
+/// use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 /// use embedded_raster::sim::{parse_scene, render_scene};
 ///
 /// let scene = parse_scene("size 16 16\ntri 0 0 16 0 0 16 #FF0000\ntri 16 0 16 16 0 16 #0000ff")?;

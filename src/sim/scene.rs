@@ -38,7 +38,7 @@ pub const MAX_SCENE_SIDE: u32 = 4096;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{geometry::Size, pixelcolor::Rgb888};
+/// use embedded_graphics::{geometry::Size, pixelcolor::Rgb888};
 /// use embedded_raster::sim::{parse_scene, Command};
 ///
 /// let scene = parse_scene("size 32 16\nclear #102030\n")?;
@@ -58,7 +58,7 @@ impl Scene {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::geometry::Size;
+    /// use embedded_graphics::geometry::Size;
     /// use embedded_raster::sim::parse_scene;
     ///
     /// assert_eq!(parse_scene("size 1 4096")?.size(), Size::new(1, 4096));
@@ -89,7 +89,7 @@ impl Scene {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
+/// use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 /// use embedded_raster::sim::{parse_scene, Command};
 ///
 /// let scene = parse_scene("size 8 8\nrect -2 3 4 0 #FF0000")?;

@@ -131,7 +131,7 @@ use pieces::{Piece, Pt, Segment};
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;
-/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
 /// use embedded_raster::{Join, Polyline};
 ///
 /// let points = [Point::new(0, 3), Point::new(7, 3), Point::new(7, 10)];

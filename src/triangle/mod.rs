@@ -27,9 +27,9 @@ use crate::{
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 /// use embedded_raster::{Triangle, Vertex};
-/// # use embedded_graphics_core::{primitives::Rectangle, Pixel};
+/// # use embedded_graphics::{primitives::Rectangle, Pixel};
 /// # struct Display;
 /// # impl OriginDimensions for Display { fn size(&self) -> Size { Size::new(64, 64) } }
 /// # impl DrawTarget for Display {
@@ -81,7 +81,7 @@ impl Triangle {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::geometry::Point;
+    /// use embedded_graphics::geometry::Point;
     /// use embedded_raster::Triangle;
     ///
     /// let t = Triangle::from_points(Point::new(0, 0), Point::new(9, 0), Point::new(0, 9))?;
@@ -98,7 +98,7 @@ impl Triangle {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::Triangle;
     ///
     /// let filled = Triangle::default().fill(BinaryColor::On);
@@ -118,7 +118,7 @@ impl Triangle {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{Join, Triangle};
     ///
     /// let stroked = Triangle::default().stroke(BinaryColor::On);
@@ -143,7 +143,7 @@ impl Triangle {
     ///
     /// ```
     /// use core::convert::Infallible;
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::{Span, Triangle, Vertex};
     ///
     /// // A right triangle with legs of 4 px, corners on pixel corners. The
@@ -177,7 +177,7 @@ impl Triangle {
     ///
     /// ```
     /// use core::convert::Infallible;
-    /// use embedded_graphics_core::{geometry::{Point, Size}, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, primitives::Rectangle};
     /// use embedded_raster::{Span, SubpixelPrecision, Triangle, TriangleAlgorithm, Vertex};
     ///
     /// let v = |x: i32, y: i32| Vertex::try_from_num(x, y).unwrap();
@@ -239,9 +239,9 @@ impl Triangle {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
 /// use embedded_raster::{Triangle, Vertex};
-/// # use embedded_graphics_core::{primitives::Rectangle, Pixel};
+/// # use embedded_graphics::{primitives::Rectangle, Pixel};
 /// # struct Display;
 /// # impl OriginDimensions for Display { fn size(&self) -> Size { Size::new(16, 16) } }
 /// # impl DrawTarget for Display {
@@ -271,7 +271,7 @@ impl<C> FilledTriangle<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{Triangle, TriangleAlgorithm};
     ///
     /// let t = Triangle::default().fill(BinaryColor::On).algorithm(TriangleAlgorithm::EdgeWalk);
@@ -292,7 +292,7 @@ impl<C> FilledTriangle<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{SubpixelPrecision, Triangle};
     ///
     /// let t = Triangle::default().fill(BinaryColor::On).precision(SubpixelPrecision::Bits4);
@@ -331,7 +331,7 @@ impl<C: PixelColor> SpanDrawable for FilledTriangle<C> {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
 /// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, Join, Triangle};
 ///
 /// let mut fb = Framebuffer::<Gray8Bytes, 32, 32, { buffer_size::<Gray8Bytes>(32, 32) }>::new();
@@ -361,7 +361,7 @@ impl<C> StrokedTriangle<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::Triangle;
     ///
     /// assert_eq!(Triangle::default().stroke(BinaryColor::On).stroke_width(4).width, 4);
@@ -376,7 +376,7 @@ impl<C> StrokedTriangle<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{Join, Triangle};
     ///
     /// let t = Triangle::default().stroke(BinaryColor::On).join(Join::Bevel);
@@ -408,7 +408,7 @@ impl<C: PixelColor> SpanDrawable for StrokedTriangle<C> {
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
 /// use embedded_raster::{
 ///     framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, SubpixelPrecision, Triangle,
 ///     TriangleAlgorithm,
@@ -442,7 +442,7 @@ impl<C> FilledTriangleVariant<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{SubpixelPrecision, Triangle, TriangleAlgorithm};
     ///
     /// let t = Triangle::default()
@@ -461,7 +461,7 @@ impl<C> FilledTriangleVariant<C> {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::{SubpixelPrecision, Triangle, TriangleAlgorithm};
     ///
     /// let t = Triangle::default()

@@ -48,9 +48,9 @@ fn walk_line<const B: usize>(buffer: &mut [u8], stride: usize, pixels: &LinePixe
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 /// use embedded_raster::framebuffer::{buffer_size, Framebuffer, Rgb565Le};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// let mut fb = Framebuffer::<Rgb565Le, 2, 1, { buffer_size::<Rgb565Le>(2, 1) }>::new();
 /// fb.clear(Rgb565::RED)?; // 0xF800
@@ -67,9 +67,9 @@ pub struct Rgb565Le;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 /// use embedded_raster::framebuffer::{buffer_size, Framebuffer, Rgb565Be};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// let mut fb = Framebuffer::<Rgb565Be, 2, 1, { buffer_size::<Rgb565Be>(2, 1) }>::new();
 /// fb.clear(Rgb565::RED)?; // 0xF800
@@ -87,9 +87,9 @@ pub struct Rgb565Be;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Bgr565, RgbColor};
+/// use embedded_graphics::pixelcolor::{Bgr565, RgbColor};
 /// use embedded_raster::framebuffer::{buffer_size, Bgr565Le, Framebuffer};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// let mut fb = Framebuffer::<Bgr565Le, 2, 1, { buffer_size::<Bgr565Le>(2, 1) }>::new();
 /// fb.clear(Bgr565::BLUE)?; // 0xF800
@@ -109,9 +109,9 @@ pub struct Bgr565Le;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Bgr565, RgbColor};
+/// use embedded_graphics::pixelcolor::{Bgr565, RgbColor};
 /// use embedded_raster::framebuffer::{buffer_size, Bgr565Be, Framebuffer};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// let mut fb = Framebuffer::<Bgr565Be, 2, 1, { buffer_size::<Bgr565Be>(2, 1) }>::new();
 /// fb.clear(Bgr565::RED)?; // 0x001F
@@ -128,9 +128,9 @@ pub struct Bgr565Be;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb888;
+/// use embedded_graphics::pixelcolor::Rgb888;
 /// use embedded_raster::framebuffer::{buffer_size, Framebuffer, Rgb888Bytes};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// let mut fb = Framebuffer::<Rgb888Bytes, 2, 1, { buffer_size::<Rgb888Bytes>(2, 1) }>::new();
 /// fb.clear(Rgb888::new(1, 2, 3))?;
@@ -153,9 +153,9 @@ pub struct Rgb888Bytes;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb666;
+/// use embedded_graphics::pixelcolor::Rgb666;
 /// use embedded_raster::framebuffer::{buffer_size, Framebuffer, Rgb666Bytes};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// let mut fb = Framebuffer::<Rgb666Bytes, 2, 1, { buffer_size::<Rgb666Bytes>(2, 1) }>::new();
 /// fb.clear(Rgb666::new(63, 1, 32))?;
@@ -172,9 +172,9 @@ pub struct Rgb666Bytes;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics::pixelcolor::Gray8;
 /// use embedded_raster::framebuffer::{buffer_size, Framebuffer, Gray8Bytes};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// let mut fb = Framebuffer::<Gray8Bytes, 3, 1, { buffer_size::<Gray8Bytes>(3, 1) }>::new();
 /// fb.clear(Gray8::new(0x80))?;

@@ -39,7 +39,7 @@ use embedded_graphics_core::pixelcolor::PixelColor;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 /// use embedded_raster::framebuffer::{PixelFormat, Rgb565Be};
 ///
 /// let mut row = [0u8; 8]; // 4 pixels
@@ -72,7 +72,7 @@ pub trait PixelFormat {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use embedded_raster::framebuffer::{BinaryMsb, PixelFormat};
     ///
     /// let mut row = [0u8; 2]; // up to 16 pixels, leftmost in bit 7
@@ -91,7 +91,7 @@ pub trait PixelFormat {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics::pixelcolor::Gray8;
     /// use embedded_raster::framebuffer::{Gray8Bytes, PixelFormat};
     ///
     /// let mut row = [0u8; 4];
@@ -121,7 +121,7 @@ pub trait PixelFormat {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
+    /// use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
     /// use embedded_raster::framebuffer::{PixelFormat, Rgb888Bytes};
     ///
     /// let row = [0, 0, 0, 1, 2, 3];
@@ -139,7 +139,7 @@ pub trait PixelFormat {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
     /// use embedded_raster::framebuffer::{PixelFormat, Rgb565Le};
     ///
     /// let mut row = [0u8; 4];
@@ -161,7 +161,7 @@ pub trait PixelFormat {
     /// # Examples
     ///
     /// ```
-    /// use embedded_graphics_core::{geometry::{Point, Size}, pixelcolor::Gray8, primitives::Rectangle};
+    /// use embedded_graphics::{geometry::{Point, Size}, pixelcolor::Gray8, primitives::Rectangle};
     /// use embedded_raster::{framebuffer::{Gray8Bytes, PixelFormat}, Line};
     ///
     /// let mut buffer = [0u8; 12]; // 4 x 3

@@ -18,9 +18,9 @@ use super::PixelFormat;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use embedded_graphics::pixelcolor::BinaryColor;
 /// use embedded_raster::framebuffer::{buffer_size, BinaryMsb, Framebuffer};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// // 10 pixels per row: 2 bytes, the last 6 bits padding.
 /// let mut fb = Framebuffer::<BinaryMsb, 10, 2, { buffer_size::<BinaryMsb>(10, 2) }>::new();
@@ -40,9 +40,9 @@ pub struct BinaryMsb;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray4;
+/// use embedded_graphics::pixelcolor::Gray4;
 /// use embedded_raster::framebuffer::{buffer_size, Framebuffer, Gray4Msb};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// // 3 pixels per row: 2 bytes, the last nibble padding.
 /// let mut fb = Framebuffer::<Gray4Msb, 3, 1, { buffer_size::<Gray4Msb>(3, 1) }>::new();
@@ -72,9 +72,9 @@ pub struct Gray4Msb;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray4;
+/// use embedded_graphics::pixelcolor::Gray4;
 /// use embedded_raster::framebuffer::{buffer_size, Framebuffer, Gray4Lsb};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// let mut fb = Framebuffer::<Gray4Lsb, 3, 1, { buffer_size::<Gray4Lsb>(3, 1) }>::new();
 /// Pixel(Point::new(0, 0), Gray4::new(0xA)).draw(&mut fb)?;
@@ -95,9 +95,9 @@ pub struct Gray4Lsb;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray2;
+/// use embedded_graphics::pixelcolor::Gray2;
 /// use embedded_raster::framebuffer::{buffer_size, Framebuffer, Gray2Msb};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// // 5 pixels per row: 2 bytes, the last 6 bits padding.
 /// let mut fb = Framebuffer::<Gray2Msb, 5, 1, { buffer_size::<Gray2Msb>(5, 1) }>::new();
@@ -117,9 +117,9 @@ pub struct Gray2Msb;
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray2;
+/// use embedded_graphics::pixelcolor::Gray2;
 /// use embedded_raster::framebuffer::{buffer_size, Framebuffer, Gray2Lsb};
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::prelude::*;
 ///
 /// let mut fb = Framebuffer::<Gray2Lsb, 5, 1, { buffer_size::<Gray2Lsb>(5, 1) }>::new();
 /// Pixel(Point::new(1, 0), Gray2::new(0b11)).draw(&mut fb)?;
