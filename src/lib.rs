@@ -56,6 +56,7 @@
 //! | [`mesh`] | fixed-point 3D without floats: table sine/cosine, rotation, perspective projection to vertices and depths, an allocation-free latitude/longitude sphere |
 //! | [`framebuffer`] | [`Framebuffer`], an owned const-sized [`DrawTarget`] and [`SpanSink`] for Rgb565 and Bgr565 (both byte orders), Rgb888, 18-bit Rgb666, Gray8, Gray4 and Gray2 (both packing orders) and 1-bit, filled with `memset` and aligned word stores |
 //! | `sim` (feature `sim`) | the host simulator: an overdraw-counting display, PNG export, the scene-file renderer |
+//! | [`band`] | drawing without a full framebuffer: [`DisplayList`](band::DisplayList) rendered band by band into a buffer of a few rows (flat triangles continued from band to band), [`Band`](band::Band), [`WriteTo`](band::WriteTo) a display driver, [`DirtyRows`](band::DirtyRows) for partial updates |
 //! | [`prelude`] | the crate's traits, to glob-import beside embedded-graphics' prelude without name clashes |
 //! | `convert` (feature `embedded-graphics`, private) | [`Triangle`], [`Line`] and [`Polyline`] from embedded-graphics' shapes of the same name |
 //!
