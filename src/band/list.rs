@@ -261,9 +261,10 @@ impl core::error::Error for DisplayListFull {}
 /// list.push(Command::Line(Line::new(Point::new(0, 31), Point::new(63, 0)).stroke(Rgb565::WHITE)))?;
 ///
 /// // A 64 x 32 screen in bands of 8 rows: 1 KiB of pixels instead of 4.
-/// let mut band = [Framebuffer::<Rgb565Be, 64, 8, { buffer_size::<Rgb565Be>(64, 8) }>::new()];
+/// type Band = Framebuffer<Rgb565Be, 64, 8, { buffer_size::<Rgb565Be>(64, 8) }>;
+/// let mut band = [Band::new()];
 /// let mut screen = Framebuffer::<Rgb565Be, 64, 32, { buffer_size::<Rgb565Be>(64, 32) }>::new();
-/// list.render_bands(32, &mut band, None, &mut |rows: &Framebuffer<_, 64, 8, _>, area: Rectangle| {
+/// list.render_bands(32, &mut band, None, &mut |rows: &Band, area: Rectangle| {
 ///     // Send the band to the display; here, copy it into a whole frame.
 ///     let start = area.top_left.y as usize * 64 * 2;
 ///     let bytes = &rows.as_bytes()[..area.size.height as usize * 64 * 2];

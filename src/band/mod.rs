@@ -388,13 +388,14 @@ where
 /// use embedded_graphics::{mono_font::{ascii::FONT_6X10, MonoTextStyle}, pixelcolor::BinaryColor, prelude::*, text::Text};
 /// use embedded_raster::{band::render_in_bands, framebuffer::{buffer_size, BinaryMsb}, Framebuffer};
 ///
-/// let mut buffers = [Framebuffer::<BinaryMsb, 64, 4, { buffer_size::<BinaryMsb>(64, 4) }>::new()];
+/// type Rows = Framebuffer<BinaryMsb, 64, 4, { buffer_size::<BinaryMsb>(64, 4) }>;
+/// let mut buffers = [Rows::new()];
 /// let mut lit = 0;
 /// render_in_bands(16, &mut buffers, None, |band, _depth| {
 ///     band.clear(BinaryColor::Off)?;
 ///     Text::new("band", Point::new(2, 10), MonoTextStyle::new(&FONT_6X10, BinaryColor::On)).draw(band)?;
 ///     Ok::<(), core::convert::Infallible>(())
-/// }, &mut |rows: &Framebuffer<BinaryMsb, 64, 4, _>, area: embedded_graphics::primitives::Rectangle| {
+/// }, &mut |rows: &Rows, area: embedded_graphics::primitives::Rectangle| {
 ///     lit += rows.as_bytes()[..area.size.height as usize * 8].iter().map(|b| b.count_ones()).sum::<u32>();
 ///     Ok::<(), core::convert::Infallible>(())
 /// })?;
