@@ -583,7 +583,7 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
             };
             if let Some(walk) = walks.of(index) {
                 // Set up in an earlier band: continue.
-                if walk.emit_until(rows.end, &mut band.span_writer(t.color))? {
+                if walk.emit_until(rows.end, &mut band.row_span_writer(t.color))? {
                     walks.finish(index);
                 }
                 continue;
@@ -603,7 +603,7 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
             };
             match slot {
                 Some(walk) => {
-                    if walk.emit_until(rows.end, &mut band.span_writer(t.color))? {
+                    if walk.emit_until(rows.end, &mut band.row_span_writer(t.color))? {
                         walks.finish(index);
                     }
                 }

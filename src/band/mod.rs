@@ -180,6 +180,27 @@ impl<T> Band<'_, T> {
     }
 }
 
+impl<T> Band<'_, T> {
+    /// Like [`span_writer`](Self::span_writer), for spans known to lie in
+    /// the band's rows (a walk stopped at the band's end, started at or
+    /// below its top): moved up by `top` only. A span outside them would
+    /// still be clipped by the target to its own rows.
+    #[inline]
+    pub(crate) fn row_span_writer<'s, C: Copy + 's>(
+        &'s mut self,
+        color: C,
+    ) -> impl FnMut(Span) -> Result<(), <T as SpanSink<C>>::Error> + 's
+    where
+        T: SpanSink<C>,
+    {
+        let (top, target) = (self.top, &mut *self.target);
+        move |span: Span| match span.y.checked_sub(top) {
+            Some(y) => target.fill_span(Span { y, ..span }, color),
+            None => Ok(()),
+        }
+    }
+}
+
 impl<T: OriginDimensions> Dimensions for Band<'_, T> {
     fn bounding_box(&self) -> Rectangle {
         self.area()

@@ -73,6 +73,7 @@ pub(crate) struct TriangleRows {
 impl TriangleRows {
     /// Sets up the walk of `vertices` inside `clip`, or `None` if the
     /// triangle lights nothing there or needs the 64-bit path.
+    #[inline(always)]
     pub(crate) fn new(vertices: &[Vertex; 3], clip: &Rectangle) -> Option<Self> {
         let frame = Frame::around(vertices, clip)?;
         let mut v = *vertices;
