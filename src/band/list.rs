@@ -544,6 +544,7 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
             slot_of: [0; N],
             slots: [None; WALKS],
             free: heapless::Vec::new(),
+            live: 0,
         };
         walks.free_all();
         render_in_bands(
@@ -572,7 +573,15 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
         T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error> + OriginDimensions,
     {
         let rows = band.rows();
-        let commands = self.rows.iter().zip(&self.commands).enumerate();
+        // Skip the commands that ended in earlier bands (a list drawn top
+        // to bottom has many).
+        let ended = self.rows.get(walks.live..).unwrap_or_default();
+        walks.live += ended
+            .iter()
+            .take_while(|&&(_, end)| end <= rows.start)
+            .count();
+        let live = walks.live;
+        let commands = self.rows.iter().zip(&self.commands).enumerate().skip(live);
         for (index, (&(start, end), command)) in commands {
             if start >= rows.end || rows.start >= end {
                 continue;
@@ -626,6 +635,9 @@ struct Walks<const N: usize> {
     slot_of: [u8; N],
     slots: [Option<TriangleRows>; WALKS],
     free: heapless::Vec<u8, WALKS>,
+    /// Commands before this one end above the current band: bands come
+    /// top to bottom, so no later band needs them.
+    live: usize,
 }
 
 impl<const N: usize> Walks<N> {
