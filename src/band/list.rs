@@ -581,8 +581,10 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
             .take_while(|&&(_, end)| end <= rows.start)
             .count();
         let live = walks.live;
-        let commands = self.rows.iter().zip(&self.commands).enumerate().skip(live);
-        for (index, (&(start, end), command)) in commands {
+        let rows_left = self.rows.get(live..).unwrap_or_default();
+        let commands_left = self.commands.get(live..).unwrap_or_default();
+        for (offset, (&(start, end), command)) in rows_left.iter().zip(commands_left).enumerate() {
+            let index = live + offset;
             if start >= rows.end || rows.start >= end {
                 continue;
             }
