@@ -101,6 +101,8 @@
 //! | colours ([`shade::ShadeColor`]) | each channel `0..=MAX` (`Rgb565` 31/63/31, `Rgb888`, `Gray8` 255, `BinaryColor` 1) | high bits dropped as `Rgb565::new` does |
 //! | depths ([`shade::DepthBuffer`]) | any `u16` (`FAR` never passes); any width and storage | width 0: no rows, nothing passes |
 //! | [`framebuffer`] sizes `W`, `H` | [`framebuffer::buffer_size`] fits `usize` | compile-time error |
+//! | [`band::DisplayList`] commands | up to its capacity `N` | [`band::DisplayListFull`], nothing added or lost |
+//! | band rendering: screen height, buffers, depth storage | any `u32` height (rows past `i32::MAX` are not drawn); buffers as wide as the screen; depth storage for one buffer's pixels | no buffer or rows: nothing drawn; depth storage short of a band: depth-tested pixels of its missing rows are not drawn |
 //! | `PixelFormat` pixel indices | any `usize` | pixels outside the row are not written |
 //! | [`mesh`] vectors, angles, camera | any `i32` / `u16` (module docs) | results saturate, or `None` from `checked_*` and `Camera::project` |
 //!

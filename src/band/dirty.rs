@@ -81,17 +81,7 @@ impl<T: OriginDimensions, const H: usize> DirtyRows<T, H> {
 
     /// Marks the part of `area` on the target as changed.
     fn mark(&mut self, area: &Rectangle) {
-        let own = Rectangle::new(Point::zero(), self.target.size());
-        let Some(b) = Bounds::of(area).intersect(Bounds::of(&own)) else {
-            return;
-        };
-        // Inside the target, whose sides are `u32`: every value fits.
-        let (x0, x1) = (b.x0 as u32, b.x1 as u32);
-        let rows = b.y0 as usize..(b.y1 as usize).min(H);
-        for (start, end) in self.rows.get_mut(rows).unwrap_or_default() {
-            *start = (*start).min(x0);
-            *end = (*end).max(x1);
-        }
+        mark_rows(&mut self.rows, self.target.size(), area);
     }
 
     /// The changed region as rectangles: runs of consecutive changed rows
@@ -191,6 +181,22 @@ impl<T: OriginDimensions + GetPixel, const H: usize> DirtyRows<T, H> {
     }
 }
 
+/// Marks the part of `area` on a target of `size` as changed in `rows`
+/// (one column range per row; rows from `H` down are not recorded).
+fn mark_rows<const H: usize>(rows: &mut [(u32, u32); H], size: Size, area: &Rectangle) {
+    let own = Rectangle::new(Point::zero(), size);
+    let Some(b) = Bounds::of(area).intersect(Bounds::of(&own)) else {
+        return;
+    };
+    // Inside the target, whose sides are `u32`: every value fits.
+    let (x0, x1) = (b.x0 as u32, b.x1 as u32);
+    let ys = b.y0 as usize..(b.y1 as usize).min(H);
+    for (start, end) in rows.get_mut(ys).unwrap_or_default() {
+        *start = (*start).min(x0);
+        *end = (*end).max(x1);
+    }
+}
+
 impl<T: OriginDimensions, const H: usize> Dimensions for DirtyRows<T, H> {
     fn bounding_box(&self) -> Rectangle {
         Rectangle::new(Point::zero(), self.target.size())
@@ -205,11 +211,12 @@ impl<T: DrawTarget + OriginDimensions, const H: usize> DrawTarget for DirtyRows<
     where
         I: IntoIterator<Item = Pixel<Self::Color>>,
     {
-        for pixel in pixels {
-            self.mark(&Rectangle::new(pixel.0, Size::new(1, 1)));
-            self.target.draw_iter(core::iter::once(pixel))?;
-        }
-        Ok(())
+        // One call to the target, marking each pixel on its way there.
+        let (rows, size) = (&mut self.rows, self.target.size());
+        let marked = pixels.into_iter().inspect(move |Pixel(p, _)| {
+            mark_rows(rows, size, &Rectangle::new(*p, Size::new(1, 1)));
+        });
+        self.target.draw_iter(marked)
     }
 
     fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>

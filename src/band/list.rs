@@ -517,7 +517,11 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
     ///
     /// The image is exactly the one drawn on a whole-screen target, byte
     /// for byte, whatever the band height. A command is set up only in the
-    /// bands its rows meet.
+    /// bands its rows meet; a flat triangle is set up once and continued
+    /// from band to band (up to 24 at a time).
+    ///
+    /// Stack: the kept triangle walks, about 3 KiB, and one byte per
+    /// command of capacity (`N`), besides what the commands' drawing uses.
     ///
     /// # Errors
     ///

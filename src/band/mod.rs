@@ -178,13 +178,12 @@ impl<T> Band<'_, T> {
             _ => Ok(()),
         }
     }
-}
 
-impl<T> Band<'_, T> {
     /// Like [`span_writer`](Self::span_writer), for spans known to lie in
     /// the band's rows (a walk stopped at the band's end, started at or
-    /// below its top): moved up by `top` only. A span outside them would
-    /// still be clipped by the target to its own rows.
+    /// below its top): moved up by `top` only, without the row test. The
+    /// target still clips to its own rows, which for a limited band
+    /// include rows below it: callers must keep to the band.
     #[inline]
     pub(crate) fn row_span_writer<'s, C: Copy + 's>(
         &'s mut self,
