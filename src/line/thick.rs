@@ -25,7 +25,9 @@
 
 use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 
-use crate::{clip::Bounds, triangle::Triangle, vertex::Vertex, vertex::ONE};
+use crate::{
+    clip::Bounds, raster::wide::div_sqrt, triangle::Triangle, vertex::Vertex, vertex::ONE,
+};
 
 /// Widths above this are drawn as this width.
 pub(crate) const MAX_WIDTH: u32 = 65535;
@@ -50,8 +52,9 @@ pub(crate) fn triangles(
         ((w * 2048, 0), (0, w * 2048))
     } else {
         let len2 = dx * dx + dy * dy;
-        let scaled =
-            |d: i128, f: i128| d.signum() * div_sqrt(d.unsigned_abs() * f.unsigned_abs(), len2);
+        let scaled = |d: i128, f: i128| {
+            d.signum() * div_sqrt(d.unsigned_abs() * f.unsigned_abs(), len2.unsigned_abs())
+        };
         // e = (dx, dy) * 2048 / len and n = (-dy, dx) * w * 2048 / len, raw.
         (
             (scaled(dx, 2048), scaled(dy, 2048)),
@@ -85,16 +88,6 @@ pub(crate) fn triangles(
         Triangle::new(v[0], v[1], v[2]),
         Triangle::new(v[0], v[2], v[3]),
     ])
-}
-
-/// `round(a / sqrt(len2))` (`len2 > 0`, half up), in raw units: with
-/// `t = floor(2 a / sqrt(len2)) = isqrt(floor(4 a^2 / len2))`, the nearest
-/// integer is `floor((t + 1) / 2)`.
-fn div_sqrt(a: u128, len2: i128) -> i128 {
-    let len2 = len2.unsigned_abs();
-    // a < 2^32 * 2^16 * 2^11, so 4 a^2 < 2^120.
-    let t = (4 * a * a / len2).isqrt();
-    i128::try_from(t.div_ceil(2)).unwrap_or_default()
 }
 
 /// The part of the centre line `p0 -> p1` (raw units) inside `clip` grown

@@ -130,6 +130,25 @@ pub(crate) fn orientation<T: Narrow>(a: (T, T), b: (T, T), c: (T, T)) -> T::Doub
     ux * vy - uy * vx
 }
 
+/// Rounds `n / d` to the nearest integer, halves up; `d != 0`. The
+/// callers keep `2 |n| + |d|` within `i128`.
+pub(crate) fn round_div(n: i128, d: i128) -> i128 {
+    let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
+    (2 * n + d).div_euclid(2 * d)
+}
+
+/// `round(a / sqrt(len2))` (`len2 > 0`, halves up), exactly: with `t =
+/// floor(2 a / sqrt(len2)) = isqrt(floor(4 a^2 / len2))`, the nearest
+/// integer is `ceil(t / 2)`. The callers keep `a < 2^59`, so `4 a^2 <
+/// 2^120`; in 64 bits when the operands fit (any stroke on a screen).
+pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
+    let t = match (u64::try_from(4 * a * a), u64::try_from(len2)) {
+        (Ok(n), Ok(d)) => u128::from((n / d).isqrt()),
+        _ => (4 * a * a / len2).isqrt(),
+    };
+    i128::try_from(t.div_ceil(2)).unwrap_or_default()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

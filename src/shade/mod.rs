@@ -68,16 +68,15 @@ use core::marker::PhantomData;
 
 use embedded_graphics_core::{draw_target::DrawTarget, Drawable};
 
-use crate::{raster::wide::orientation, span::Span, triangle::FilledTriangle, triangle::Triangle};
+use crate::{
+    raster::wide::{orientation, round_div},
+    span::Span,
+    triangle::FilledTriangle,
+    triangle::Triangle,
+};
 
 /// `1/2` in 32.32 fixed point, for rounding.
 const HALF: i64 = 1 << 31;
-
-/// Rounds `n / d` to the nearest integer, halves up; `d != 0`.
-fn round_div(n: i128, d: i128) -> i128 {
-    let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
-    (2 * n + d).div_euclid(2 * d)
-}
 
 /// The barycentric frame of a triangle: its raw vertices and doubled signed
 /// area (module docs).

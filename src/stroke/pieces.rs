@@ -35,6 +35,7 @@
 //! the opposite direction (a full reversal), the half-plane ahead.
 
 use super::{Join, MITER_LIMIT};
+use crate::raster::wide::{div_sqrt, round_div};
 
 /// A point in raw 20.12 units.
 pub(crate) type Pt = (i128, i128);
@@ -165,23 +166,6 @@ impl Piece {
             self.count += 1;
         }
     }
-}
-
-/// `round(a / sqrt(len2))` (`len2 > 0`, half up), in raw units: with `t =
-/// floor(2 a / sqrt(len2)) = isqrt(floor(4 a^2 / len2))`, the nearest
-/// integer is `ceil(t / 2)`. `a < 2^59`, so `4 a^2 < 2^120`.
-fn div_sqrt(a: u128, len2: u128) -> i128 {
-    // In 64 bits when it fits (any stroke on a screen): much cheaper.
-    let t = match (u64::try_from(4 * a * a), u64::try_from(len2)) {
-        (Ok(n), Ok(d)) => u128::from((n / d).isqrt()),
-        _ => (4 * a * a / len2).isqrt(),
-    };
-    i128::try_from(t.div_ceil(2)).unwrap_or_default()
-}
-
-/// `round(n / d)` for `d > 0`, half up.
-fn round_div(n: i128, d: i128) -> i128 {
-    (2 * n + d).div_euclid(2 * d)
 }
 
 /// A segment `a -> b` (raw units, `a != b`) of a stroke `w` px wide.
