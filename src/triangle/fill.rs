@@ -103,7 +103,9 @@ impl TriangleRows {
         let frame = &self.frame;
         let last = frame.height - 1;
         // The last row of this window, relative to the frame.
-        let stop = (i64::from(until) - i64::from(frame.origin.y) - 1).min(i64::from(last));
+        // Clamped into `i32` (`last` is one): the cast below is exact.
+        let stop = (i64::from(until) - i64::from(frame.origin.y) - 1)
+            .clamp(i64::from(i32::MIN), i64::from(last)) as i32;
         loop {
             let (short, upper) = match (&mut self.upper, &mut self.lower) {
                 (Some(short), _) => (short, true),
@@ -112,8 +114,7 @@ impl TriangleRows {
             };
             let from = self.row.max(short.first_row);
             let half_end = short.last_row.min(last);
-            // `stop` is below `last`, an `i32`.
-            let end = half_end.min(stop as i32);
+            let end = half_end.min(stop);
             if from > end {
                 return Ok(false);
             }
