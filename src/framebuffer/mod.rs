@@ -441,18 +441,14 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
         }
         if let Some((xs, ys)) = clip_to(area, &self.bounding_box()) {
             let (rows, span) = self.rows_mut(xs, ys, true);
-            for row in rows {
-                F::fill_span(row, span.clone(), color);
-            }
+            F::fill_rows(rows, span, color);
         }
         Ok(())
     }
 
     fn clear(&mut self, color: F::Color) -> Result<(), Infallible> {
         let (rows, span) = self.rows_mut(0..W, 0..H, true);
-        for row in rows {
-            F::fill_span(row, span.clone(), color);
-        }
+        F::fill_rows(rows, span, color);
         Ok(())
     }
 }

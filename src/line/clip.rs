@@ -46,8 +46,9 @@
 //! computed exactly: in `i64` when `dmajor < 2^30`, else in `i128`
 //! (coordinates are any `i32`, so `dmajor < 2^32` and, with the clip's
 //! offsets first limited to `0..=dminor`, every product is below `2^67`).
-//! A line that lies wholly inside the clip rectangle takes the textbook
-//! start, `D = 2 dminor - dmajor - b`, without any division.
+//! A line whose ends lie inside the clip rectangle takes the textbook
+//! start, `D = 2 dminor - dmajor - b`, without any division or clip
+//! arithmetic.
 
 use crate::raster::wide::Wide;
 
@@ -146,6 +147,19 @@ impl Canonical {
     /// The exactly clipped visible part, or `None` if no pixel of the line
     /// lies inside `clip`.
     pub fn visible(&self, clip: &Rectangle, skip_end: bool) -> Option<Visible> {
+        let b = Bounds::of(clip);
+        let inside = |major: i64, minor: i64| {
+            let (x, y) = if self.x_major {
+                (major, minor)
+            } else {
+                (minor, major)
+            };
+            b.x0 <= x && x < b.x1 && b.y0 <= y && y < b.y1
+        };
+        let last_minor = self.minor0 + self.minor_step * self.dminor;
+        if inside(self.major0, self.minor0) && inside(self.major0 + self.dmajor, last_minor) {
+            return self.unclipped(skip_end);
+        }
         let (lo, hi) = self.major_steps(clip, skip_end)?;
         // The clip's minor range as offsets m, limited to the line's own
         // offsets 0..=dminor (which changes no step range: m(0) = 0 and
@@ -155,17 +169,42 @@ impl Canonical {
             return None;
         }
         let (m_lo, m_hi) = (m_lo.max(0), m_hi.min(self.dminor));
-        let whole = lo == 0 && hi == self.dmajor && m_lo == 0 && m_hi == self.dminor;
-        let (lo, hi, m, d) = if whole {
-            // Nothing clipped: the textbook start, no division.
-            let d = 2 * self.dminor - self.dmajor - i64::from(self.minor_step > 0);
-            (lo, hi, 0, d)
-        } else if self.dmajor < 1 << 30 {
+        let (lo, hi, m, d) = if self.dmajor < 1 << 30 {
             // |2 dmajor m| < 2^62.
             self.entry::<i64>(lo, hi, m_lo, m_hi)?
         } else {
             self.entry::<i128>(lo, hi, m_lo, m_hi)?
         };
+        self.steps(lo, hi, m, d)
+    }
+
+    /// [`visible`](Self::visible) for a line whose ends lie inside the
+    /// clip, and so every pixel (the clip is convex, the line monotonic):
+    /// the textbook start `D = 2 dminor - dmajor - b`, without division,
+    /// moved on by one Bresenham step when the skipped end is the first.
+    fn unclipped(&self, skip_end: bool) -> Option<Visible> {
+        let (two_minor, two_major) = (2 * self.dminor, 2 * self.dmajor);
+        let mut d = two_minor - self.dmajor - i64::from(self.minor_step > 0);
+        let (mut lo, mut hi, mut m) = (0, self.dmajor, 0);
+        if skip_end && self.reversed {
+            lo = 1;
+            if d >= 0 {
+                m = 1;
+                d -= two_major;
+            }
+            d += two_minor;
+        } else if skip_end {
+            hi -= 1;
+        }
+        if lo > hi {
+            return None;
+        }
+        self.steps(lo, hi, m, d)
+    }
+
+    /// The visible steps `lo..=hi`, with offset `m` and decision `d` at
+    /// `lo`.
+    fn steps(&self, lo: i64, hi: i64, m: i64, d: i64) -> Option<Visible> {
         // Every visible pixel is a pixel of the line: all fit in i32.
         let minor = self.minor0 + self.minor_step * m;
         Some(Visible {

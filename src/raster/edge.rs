@@ -128,6 +128,43 @@ impl<T: Narrow> Edge<T> {
     }
 }
 
+impl Edge<i32> {
+    /// [`Edge::new`] from the edge's own first row, for a short edge near
+    /// the frame's origin: both coordinates of `top` and `bottom` below
+    /// [`SMALL`] in magnitude and their differences too (the caller shows
+    /// it from the shape's bounding box), `top.1 < bottom.1`.
+    ///
+    /// Then every product fits `i32` and nothing is checked: `|4096 dx| <
+    /// 2^31` and `e0 |dx| <= 4095 (2^19 - 1) < 2^31`, and with no row
+    /// skipped (`n = 0`) the crossing is `x0 + ceil(e0 dx / dy)`. Two
+    /// divisions, one hardware instruction each on a Cortex-M, and no
+    /// call: the setup of a small triangle's three edges.
+    #[inline(always)]
+    pub(crate) fn new_small(top: (i32, i32), bottom: (i32, i32)) -> Option<Self> {
+        let (dx, dy) = (bottom.0 - top.0, bottom.1 - top.1);
+        let first = first_row_at_or_below(top.1);
+        let last = first_row_at_or_below(bottom.1) - 1;
+        if first > last {
+            return None;
+        }
+        let e0 = first * ONE - top.1;
+        let (q, r) = (dx * ONE).div_rem_floor(dy)?;
+        let (f, s) = (-(e0 * dx)).div_rem_floor(dy)?;
+        Some(Self {
+            first_row: first,
+            last_row: last,
+            x: top.0 - f,
+            s,
+            q,
+            r,
+            dy,
+        })
+    }
+}
+
+/// The bound of [`Edge::new_small`]: `2^19` raw units, 128 pixels.
+pub(crate) const SMALL: i32 = 1 << 19;
+
 impl<T: Wide> Edge<T> {
     /// `ceil(x(y))` on the current row, in raw units: edges meeting at a
     /// row compare by it.

@@ -3,7 +3,7 @@
 
 use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 
-use super::wide::Wide;
+use super::{edge::SMALL, wide::Wide};
 use crate::vertex::Vertex;
 
 /// The pixels of a clip rectangle whose centres lie in a shape's bounding
@@ -47,6 +47,27 @@ impl Frame {
             lo = (lo.0.min(x), lo.1.min(y));
             hi = (hi.0.max(x), hi.1.max(y));
         }
+        Self::of_box(lo, hi, clip)
+    }
+
+    /// [`around`](Self::around) a triangle whose vertices are sorted by
+    /// `y` (the first and last give the box's top and bottom), and
+    /// whether its bounding box spans under [`SMALL`] raw units a side.
+    #[inline(always)]
+    pub(crate) fn around_sorted_triangle(
+        v: &[Vertex; 3],
+        clip: &Rectangle,
+    ) -> Option<(Self, bool)> {
+        let x = v.map(|v| v.raw().0);
+        let lo = (x[0].min(x[1]).min(x[2]), v[0].raw().1);
+        let hi = (x[0].max(x[1]).max(x[2]), v[2].raw().1);
+        let small = hi.0.abs_diff(lo.0) < SMALL as u32 && hi.1.abs_diff(lo.1) < SMALL as u32;
+        Some((Self::of_box(lo, hi, clip)?, small))
+    }
+
+    /// The frame of the box `lo..=hi` (raw) inside `clip`.
+    #[inline(always)]
+    fn of_box(lo: (i32, i32), hi: (i32, i32), clip: &Rectangle) -> Option<Self> {
         // Pixels lie within +-(2^19 + 1): saturating the clip's far edge at
         // i32::MAX changes nothing.
         let end = |start: i32, len: u32| start.saturating_add_unsigned(len);
@@ -57,19 +78,20 @@ impl Frame {
         if x0 >= x1 || y0 >= y1 {
             return None;
         }
-        // |x0|, |y0| <= 2^19, so the centres lie within +-(2^31 - 2048).
-        let centre = |p: i32| p.checked_mul(4096)?.checked_add(2048);
-        let centre = (centre(x0)?, centre(y0)?);
+        // x0 and y0 are the first centres at or after lo (or clip edges
+        // past them) and before the last ones at or before hi, so they lie
+        // within -2^19..2^19: 4096 p + 2048 is within +-(2^31 - 2048).
+        let centre = |p: i32| p * 4096 + 2048;
         // The origin's centre lies in the box [lo, hi] (x0 and y0 are
         // candidates: clipping only moves them inwards), so every vertex
         // lies within the box's extent of it.
-        let small = |lo: i32, hi: i32| hi.checked_sub(lo).is_some_and(|e| e < 1 << 29);
+        let within = |lo: i32, hi: i32, bound: u32| hi.abs_diff(lo) < bound;
         Some(Self {
             origin: Point::new(x0, y0),
             width: x1 - x0,
             height: y1 - y0,
-            centre,
-            near: small(lo.0, hi.0) && small(lo.1, hi.1),
+            centre: (centre(x0), centre(y0)),
+            near: within(lo.0, hi.0, 1 << 29) && within(lo.1, hi.1, 1 << 29),
         })
     }
 

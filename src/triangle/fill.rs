@@ -37,15 +37,26 @@ pub(crate) fn triangle_spans<E>(
     clip: &Rectangle,
     mut emit: impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
-    let Some(frame) = Frame::around(vertices, clip) else {
-        return Ok(());
-    };
     let mut v = *vertices;
     sort_by_y(&mut v);
+    let Some((frame, small)) = Frame::around_sorted_triangle(&v, clip) else {
+        return Ok(());
+    };
     match relative::<i32>(&frame, &v) {
-        Some(p) => walk(&frame, p, &mut emit),
+        Some(p) => {
+            // A small triangle's coordinates and differences lie below
+            // `SMALL` (the origin's centre is in its box); if its top lies
+            // below the sample line above the frame, no edge skips a row:
+            // what `Edge::new_small` needs.
+            let small = small && p[0].1 > -4096;
+            let edge = |a, b| match small {
+                true => Edge::new_small(a, b),
+                false => Edge::new(a, b, 0),
+            };
+            walk(&frame, p, edge, &mut emit)
+        }
         None => match relative::<i64>(&frame, &v) {
-            Some(p) => walk(&frame, p, &mut emit),
+            Some(p) => walk(&frame, p, |a, b| Edge::new(a, b, 0), &mut emit),
             // Unreachable: every coordinate fits i64.
             None => Ok(()),
         },
@@ -175,6 +186,7 @@ fn sort_by_y(v: &mut [Vertex; 3]) {
 fn walk<T: Narrow, E>(
     frame: &Frame,
     p: [(T, T); 3],
+    edge: impl Fn((T, T), (T, T)) -> Option<Edge<T>>,
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
     // Coordinates within the bound: the orientation is exact.
@@ -184,7 +196,7 @@ fn walk<T: Narrow, E>(
     }
     let short_left = turn < T::Double::ZERO;
     let last = frame.height - 1;
-    let Some(mut long) = Edge::<T>::new(p[0], p[2], 0) else {
+    let Some(mut long) = edge(p[0], p[2]) else {
         return Ok(());
     };
     // Each half: the rows of the short edge, between it and the long edge.
@@ -196,13 +208,13 @@ fn walk<T: Narrow, E>(
         }
         .map(|()| end)
     };
-    if let Some(mut upper) = Edge::<T>::new(p[0], p[1], 0) {
+    if let Some(mut upper) = edge(p[0], p[1]) {
         if half(&mut upper, &mut long)? == last {
             return Ok(());
         }
         long.step();
     }
-    if let Some(mut lower) = Edge::<T>::new(p[1], p[2], 0) {
+    if let Some(mut lower) = edge(p[1], p[2]) {
         half(&mut lower, &mut long)?;
     }
     Ok(())

@@ -258,6 +258,75 @@ fn fill_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     }
 }
 
+/// [`fill_bytes`] on the same pixels `xs` of many rows, each row one
+/// call's worth of checks and stores: where [`fill_bytes`] would take the
+/// word path, the split of the span into pixels before the first word
+/// boundary, whole words and pixels after the last one is worked out once
+/// (rows starting on a word boundary split alike), and a row that does
+/// not start on one is filled by [`fill_bytes`].
+#[inline(always)]
+fn fill_rows_bytes<'a, const B: usize>(
+    rows: impl Iterator<Item = &'a mut [u8]>,
+    xs: Range<usize>,
+    pixel: [u8; B],
+) {
+    let (Some(lo), Some(hi)) = (xs.start.checked_mul(B), xs.end.checked_mul(B)) else {
+        return;
+    };
+    let uniform = pixel.iter().all(|&b| b == pixel[0]);
+    if uniform || xs.len() < 16 || 4 % B != 0 || !cfg!(target_arch = "arm") {
+        for row in rows {
+            if let Some(bytes) = row.get_mut(lo..hi) {
+                fill_bytes(bytes, pixel);
+            }
+        }
+        return;
+    }
+    fill_rows_words(rows, lo..hi, pixel);
+}
+
+/// The word path of [`fill_rows_bytes`], bytes `lo..hi` of each row (`B`
+/// divides 4, `hi - lo >= 4 B`).
+#[inline(always)]
+fn fill_rows_words<'a, const B: usize>(
+    rows: impl Iterator<Item = &'a mut [u8]>,
+    Range { start: lo, end: hi }: Range<usize>,
+    pixel: [u8; B],
+) {
+    // B divides 4, so word boundaries fall between pixels and every word
+    // holds the pattern starting with byte 0 of a pixel. 4 pixels or more
+    // hold a whole word: `lo <= first <= last <= hi`.
+    let word = u32::from_ne_bytes(core::array::from_fn(|i| pixel[i % B]));
+    let (first, last) = (lo.next_multiple_of(4), hi / 4 * 4);
+    if first > last {
+        return;
+    }
+    for row in rows {
+        let Some(row) = row.get_mut(..hi) else {
+            continue;
+        };
+        let (front, back) = row.split_at_mut(last);
+        let (front, middle) = front.split_at_mut(first);
+        match bytemuck::try_cast_slice_mut::<u8, u32>(middle) {
+            Ok(words) => {
+                for px in front
+                    .get_mut(lo..)
+                    .unwrap_or_default()
+                    .as_chunks_mut::<B>()
+                    .0
+                {
+                    *px = pixel;
+                }
+                fill_u32(words, word);
+                for px in back.as_chunks_mut::<B>().0 {
+                    *px = pixel;
+                }
+            }
+            Err(_) => fill_bytes(row.get_mut(lo..).unwrap_or_default(), pixel),
+        }
+    }
+}
+
 /// `words.fill(word)`, 8 words (32 bytes) a step: on a Cortex-M4 each
 /// step is a few multi-register stores (`strd`/`stm`) and one loop test,
 /// about 0.4 instructions per 2-byte pixel, where a plain `fill` is
@@ -309,6 +378,15 @@ macro_rules! byte_format {
                 if let Some(bytes) = byte_span::<$bytes>(row, xs) {
                     fill_bytes(bytes, $encode(color));
                 }
+            }
+
+            #[inline]
+            fn fill_rows<'a>(
+                rows: impl Iterator<Item = &'a mut [u8]>,
+                xs: Range<usize>,
+                color: $color,
+            ) {
+                fill_rows_bytes::<$bytes>(rows, xs, $encode(color));
             }
 
             fn write_span<I: Iterator<Item = $color>>(
@@ -389,3 +467,52 @@ byte_format!(
     |c: Gray8| [c.luma()],
     |[luma]: [u8; 1]| Gray8::new(luma)
 );
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The plain fill the word paths must equal: byte `i` of the span is
+    /// byte `i % B` of the pixel.
+    fn plain<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
+        for (i, b) in bytes.iter_mut().enumerate() {
+            *b = pixel[i % B];
+        }
+    }
+
+    /// Every start and length within a few words, in a buffer whose rows
+    /// start on and off word boundaries.
+    fn check<const B: usize>(pixel: [u8; B]) {
+        #[repr(C, align(4))]
+        struct Words([u8; 640]);
+        for offset in 0..4 {
+            for x0 in 0..12 {
+                for len in 4..40 {
+                    let (lo, hi) = (B * x0, B * (x0 + len));
+                    let (mut want, mut got) = (Words([0; 640]), Words([0; 640]));
+                    plain(&mut want.0[offset + lo..offset + hi], pixel);
+                    fill_words(&mut got.0[offset + lo..offset + hi], pixel);
+                    assert_eq!(want.0, got.0, "fill_words {offset} {x0} {len}");
+                    if 4 % B == 0 {
+                        // Three rows of 208 bytes.
+                        let mut want = Words([0; 640]);
+                        let rows = want.0[offset..offset + 624].chunks_exact_mut(208);
+                        rows.for_each(|row| plain(&mut row[lo..hi], pixel));
+                        let mut got = Words([0; 640]);
+                        let rows = got.0[offset..offset + 624].chunks_exact_mut(208);
+                        fill_rows_words(rows, lo..hi, pixel);
+                        assert_eq!(want.0, got.0, "fill_rows_words {offset} {x0} {len}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn word_paths_equal_the_plain_fill() {
+        check([7]);
+        check([1, 2]);
+        check([1, 2, 3]);
+        check([1, 2, 3, 4]);
+    }
+}

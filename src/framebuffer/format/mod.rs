@@ -81,6 +81,34 @@ pub trait PixelFormat {
     /// ```
     fn fill_span(row: &mut [u8], xs: Range<usize>, color: Self::Color);
 
+    /// Sets pixels `xs` of every row of `rows` to `color`: a rectangle.
+    ///
+    /// The provided implementation calls [`fill_span`](Self::fill_span)
+    /// on each row. The built-in whole-byte formats work out their word
+    /// stores once for all the rows, where rows start on a 4-byte
+    /// boundary (the rows of a [`Framebuffer`](super::Framebuffer) whose
+    /// rows are a whole number of words long).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use embedded_raster::framebuffer::{Gray8Bytes, PixelFormat};
+    ///
+    /// let mut buffer = [0u8; 12]; // 4 x 3
+    /// Gray8Bytes::fill_rows(buffer.chunks_exact_mut(4).skip(1), 1..3, Gray8::new(5));
+    /// assert_eq!(buffer, [0, 0, 0, 0, 0, 5, 5, 0, 0, 5, 5, 0]);
+    /// ```
+    fn fill_rows<'a>(
+        rows: impl Iterator<Item = &'a mut [u8]>,
+        xs: Range<usize>,
+        color: Self::Color,
+    ) {
+        for row in rows {
+            Self::fill_span(row, xs.clone(), color);
+        }
+    }
+
     /// Sets pixels `xs` of `row`, left to right, to colours taken from
     /// `colors`, and returns how many it set: `xs.len()`, or fewer if
     /// `colors` ran out first. Takes no colour beyond those it sets.
