@@ -222,15 +222,46 @@ mod tests {
             (Some(a), Some(b), Some(c), Some(d)) => Edge::<i32>::new((a, b), (c, d), from),
             _ => None,
         };
+        // The unchecked constructor, where its bounds hold and no row is
+        // skipped.
+        let within = |v: i64| {
+            i32::try_from(v)
+                .ok()
+                .filter(|v| v.unsigned_abs() < SMALL as u32)
+        };
+        let mut small = match (
+            within(top.0),
+            within(top.1),
+            within(bottom.0),
+            within(bottom.1),
+            within(bottom.0 - top.0),
+            within(bottom.1 - top.1),
+        ) {
+            (Some(a), Some(b), Some(c), Some(d), Some(_), Some(_))
+                if i64::from(from) <= (top.1 + 4095) >> 12 =>
+            {
+                let edge = Edge::new_small((a, b), (c, d));
+                assert!(edge.is_some(), "{top:?} {bottom:?}");
+                edge
+            }
+            _ => None,
+        };
         for row in e.first_row..=e.last_row {
             let want = direct(top, bottom, row.into());
             assert_eq!(e.threshold(), want, "{top:?} {bottom:?} row {row}");
             if let Some(n) = narrow.as_mut() {
                 assert_eq!(i64::from(n.threshold()), want, "i32, row {row}");
             }
+            if let Some(n) = small.as_mut() {
+                assert_eq!((n.first_row, n.last_row), (e.first_row, e.last_row));
+                assert_eq!(i64::from(n.threshold()), want, "small, row {row}");
+            }
             if row < e.last_row {
                 e.step();
                 if let Some(n) = narrow.as_mut() {
+                    n.step();
+                }
+                if let Some(n) = small.as_mut() {
                     n.step();
                 }
             }
@@ -247,6 +278,15 @@ mod tests {
         check((0, 0), (1, 100 * 4096), -5);
         check((0, -1), (-5_000_000, 7 * 4096 + 1), 2);
         check((17, 4096), (17, 3 * 4096), 0);
+        // Small edges: steep, shallow, both directions, at the bound.
+        check((-2048, -4095), (30_000, 9_000), i32::MIN);
+        check((100_000, 5), (-100_000, 41_000), 0);
+        check(
+            (-(1 << 18), -(1 << 18)),
+            ((1 << 18) - 1, (1 << 18) - 1),
+            -64,
+        );
+        check((3, -1), (-5, 7 * 4096 + 1), 0);
     }
 
     #[test]
