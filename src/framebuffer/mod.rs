@@ -447,8 +447,11 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
     }
 
     fn clear(&mut self, color: F::Color) -> Result<(), Infallible> {
+        // Unpadded rows come as one long row: one span.
         let (rows, span) = self.rows_mut(0..W, 0..H, true);
-        F::fill_rows(rows, span, color);
+        for row in rows {
+            F::fill_span(row, span.clone(), color);
+        }
         Ok(())
     }
 }
