@@ -146,6 +146,7 @@ impl Canonical {
 
     /// The exactly clipped visible part, or `None` if no pixel of the line
     /// lies inside `clip`.
+    #[inline]
     pub fn visible(&self, clip: &Rectangle, skip_end: bool) -> Option<Visible> {
         let b = Bounds::of(clip);
         let inside = |major: i64, minor: i64| {
@@ -160,6 +161,14 @@ impl Canonical {
         if inside(self.major0, self.minor0) && inside(self.major0 + self.dmajor, last_minor) {
             return self.unclipped(skip_end);
         }
+        self.clipped(clip, skip_end)
+    }
+
+    /// [`visible`](Self::visible) for a line with an end outside the
+    /// clip. Out of line: its frame is large, and lines inside the clip
+    /// need not set it up.
+    #[inline(never)]
+    fn clipped(&self, clip: &Rectangle, skip_end: bool) -> Option<Visible> {
         let (lo, hi) = self.major_steps(clip, skip_end)?;
         // The clip's minor range as offsets m, limited to the line's own
         // offsets 0..=dminor (which changes no step range: m(0) = 0 and

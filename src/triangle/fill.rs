@@ -196,7 +196,12 @@ fn walk<T: Narrow, E>(
     }
     let short_left = turn < T::Double::ZERO;
     let last = frame.height - 1;
-    let Some(mut long) = edge(p[0], p[2]) else {
+    // Each edge is used where it was returned, inside its `Option`: moved
+    // out, it was written field by field and read back whole, which
+    // stalls store forwarding on x86-64 (a third of a 4 px triangle's
+    // time).
+    let mut long = edge(p[0], p[2]);
+    let Some(long) = long.as_mut() else {
         return Ok(());
     };
     // Each half: the rows of the short edge, between it and the long edge.
@@ -208,14 +213,14 @@ fn walk<T: Narrow, E>(
         }
         .map(|()| end)
     };
-    if let Some(mut upper) = edge(p[0], p[1]) {
-        if half(&mut upper, &mut long)? == last {
+    if let Some(upper) = edge(p[0], p[1]).as_mut() {
+        if half(upper, long)? == last {
             return Ok(());
         }
         long.step();
     }
-    if let Some(mut lower) = edge(p[1], p[2]) {
-        half(&mut lower, &mut long)?;
+    if let Some(lower) = edge(p[1], p[2]).as_mut() {
+        half(lower, long)?;
     }
     Ok(())
 }
