@@ -47,7 +47,7 @@ mod target {
     use embedded_raster::{
         band::DisplayList,
         framebuffer::{buffer_size, Rgb565Le},
-        FillRule, Framebuffer, Line, Polygon, Span, SpanDrawable, StyledLine, Triangle,
+        FillRule, Framebuffer, Line, Polygon, Span, SpanDrawable, StyledLine, ThickLine, Triangle,
         TriangleAlgorithm, Vertex,
     };
 
@@ -141,6 +141,7 @@ mod target {
         Variants(TriangleAlgorithm, &'a [(Triangle, Rgb565)]),
         Rects(&'a [Rectangle]),
         Lines(&'a [StyledLine<Rgb565>]),
+        ThickLines(&'a [ThickLine<Rgb565>]),
         Polygons(&'a [(&'a [Vertex], FillRule)]),
     }
 
@@ -150,6 +151,7 @@ mod target {
                 Batch::Triangles(ts) | Batch::Variants(_, ts) => ts.len(),
                 Batch::Rects(rs) => rs.len(),
                 Batch::Lines(ls) => ls.len(),
+                Batch::ThickLines(ls) => ls.len(),
                 Batch::Polygons(ps) => ps.len(),
             }
         }
@@ -162,6 +164,7 @@ mod target {
                     .try_for_each(|(t, c)| t.fill(*c).algorithm(a).draw(target)),
                 Batch::Rects(rs) => rs.iter().try_for_each(|r| target.fill_solid(r, BLUE)),
                 Batch::Lines(ls) => ls.iter().try_for_each(|l| l.draw(target)),
+                Batch::ThickLines(ls) => ls.iter().try_for_each(|l| l.draw(target)),
                 Batch::Polygons(ps) => ps.iter().try_for_each(|&(v, rule)| {
                     let polygon = Polygon::<12>::new(v).expect("at most 12 vertices");
                     polygon.fill(BLUE).with_rule(rule).draw(target)
@@ -179,6 +182,7 @@ mod target {
                     .try_for_each(|(t, c)| t.fill(*c).algorithm(a).draw_spans(fb)),
                 Batch::Rects(rs) => rs.iter().try_for_each(|r| fb.fill_solid(r, BLUE)),
                 Batch::Lines(ls) => ls.iter().try_for_each(|l| l.draw_spans(fb)),
+                Batch::ThickLines(ls) => ls.iter().try_for_each(|l| l.draw_spans(fb)),
                 Batch::Polygons(ps) => ps.iter().try_for_each(|&(v, rule)| {
                     let polygon = Polygon::<12>::new(v).expect("at most 12 vertices");
                     polygon.fill(BLUE).with_rule(rule).draw_spans(fb)
@@ -457,17 +461,23 @@ mod target {
 
         // Lines: 1 px (short, long, ends far off-screen) and thick.
         let star = builtin_scene::star_line;
-        for (count, len, width, label) in [
-            (64, 16, 1, "1 px wide, 16 px long"),
-            (16, 200, 1, "1 px wide, 200 px long"),
-            (16, 100, 3, "3 px wide, 100 px long"),
-            (16, 100, 8, "8 px wide, 100 px long"),
+        for (count, len, label) in [
+            (64, 16, "1 px wide, 16 px long"),
+            (16, 200, "1 px wide, 200 px long"),
         ] {
             let mut ls = [Line::default().stroke(BLUE); 64];
             for (k, l) in ls.iter_mut().enumerate().take(count) {
-                *l = star(k as i32, len).stroke(BLUE).stroke_width(width);
+                *l = star(k as i32, len).stroke(BLUE);
             }
             let batch = Batch::Lines(&ls[..count]);
+            row(&mut counter, FB, RECTS, "lines", label, batch, false);
+        }
+        for (width, label) in [(3, "3 px wide, 100 px long"), (8, "8 px wide, 100 px long")] {
+            let mut ls = [Line::default().stroke(BLUE).stroke_width(width); 16];
+            for (k, l) in ls.iter_mut().enumerate() {
+                *l = star(k as i32, 100).stroke(BLUE).stroke_width(width);
+            }
+            let batch = Batch::ThickLines(&ls);
             row(&mut counter, FB, RECTS, "lines", label, batch, false);
         }
         let batch = Batch::Lines(&[builtin_scene::FAR_LINE.stroke(BLUE)]);

@@ -162,7 +162,7 @@ pub use fixed::types::I20F12;
 pub use framebuffer::Framebuffer;
 pub use line::{
     Line, LineAlgorithm, Polyline, Run, StyledLine, StyledLineVariant, StyledPolyline,
-    StyledPolylineVariant,
+    StyledPolylineVariant, ThickLine,
 };
 pub use polygon::{FillRule, FilledPolygon, Polygon, PolygonError, StrokedPolygon};
 pub use raster::sink::{DrawTargetSink, SpanDrawable, SpanSink};

@@ -104,7 +104,7 @@ fn list<'a>(rng: &mut Rng, shapes: &'a Shapes) -> DisplayList<'a, Rgb888, 64, 16
             5 => Command::Line(Line::new(point(rng), point(rng)).stroke(color(rng))),
             6 => {
                 let width = rng.below(7) as u32;
-                Command::Line(
+                Command::ThickLine(
                     Line::new(point(rng), point(rng))
                         .stroke(color(rng))
                         .stroke_width(width),

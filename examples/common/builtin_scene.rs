@@ -412,7 +412,9 @@ fn for_each_line_command<'a, E>(
     for (k, width) in [2u32, 3, 5, 8].into_iter().enumerate() {
         let y = 110 + 12 * k as i32;
         let line = Line::new(Point::new(10, y), Point::new(150, y + 25 - 10 * k as i32));
-        f(Command::Line(line.stroke(rng.color()).stroke_width(width)))?;
+        f(Command::ThickLine(
+            line.stroke(rng.color()).stroke_width(width),
+        ))?;
     }
     // A polyline.
     let polyline = Polyline::new(&shapes.polyline).stroke(Rgb565::new(31, 20, 0));

@@ -14,7 +14,7 @@ use embedded_graphics_core::{
 use super::{render_in_bands, Band, BandOutput, RenderError};
 use crate::{
     clip::{clip_rect, Bounds},
-    line::{StyledLine, StyledPolyline},
+    line::{StyledLine, StyledPolyline, ThickLine},
     polygon::FilledPolygon,
     raster::sink::{DrawTargetSink, SpanDrawable, SpanSink},
     shade::{DepthBuffer, GouraudTriangle, ShadeColor},
@@ -56,8 +56,10 @@ pub enum Command<'a, C, const P: usize = 32> {
     DepthTriangle(FilledTriangle<C>, [u16; 3]),
     /// A Gouraud triangle with vertex depths, tested likewise.
     DepthGouraud(GouraudTriangle<C>, [u16; 3]),
-    /// A line, 1 pixel or thick.
+    /// A 1-pixel line.
     Line(StyledLine<C>),
+    /// A thick line.
+    ThickLine(ThickLine<C>),
     /// A polyline through borrowed points.
     Polyline(StyledPolyline<'a, C>),
     /// A filled polygon of up to `P` borrowed vertices.
@@ -125,6 +127,10 @@ impl<C: Copy, const P: usize> Command<'_, C, P> {
             Self::DepthTriangle(t, _) => vertex_rows(t.triangle.vertices.into_iter()),
             Self::Line(l) => {
                 let (a, b) = (l.line.start.y, l.line.end.y);
+                pixel_rows(a.min(b), a.max(b), stroke_margin(1))
+            }
+            Self::ThickLine(l) => {
+                let (a, b) = (l.line.start.y, l.line.end.y);
                 pixel_rows(a.min(b), a.max(b), stroke_margin(l.width))
             }
             Self::Polyline(p) => {
@@ -169,6 +175,7 @@ impl<C: ShadeColor, const P: usize> Command<'_, C, P> {
                 None => Ok(()),
             },
             Command::Line(l) => l.draw_spans(target),
+            Command::ThickLine(l) => l.draw_spans(target),
             Command::Polyline(p) => p.draw_spans(target),
             Command::Polygon(p) => p.draw_spans(target),
         }

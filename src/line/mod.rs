@@ -300,8 +300,8 @@ impl Line {
         Self { start, end }
     }
 
-    /// Styles the line as a 1-pixel Bresenham stroke of `color`; change
-    /// the width with [`StyledLine::stroke_width`].
+    /// Styles the line as a 1-pixel Bresenham stroke of `color`; make it
+    /// wider with [`StyledLine::stroke_width`].
     ///
     /// # Examples
     ///
@@ -310,14 +310,10 @@ impl Line {
     /// use embedded_raster::Line;
     ///
     /// let styled = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On);
-    /// assert_eq!((styled.color, styled.width), (BinaryColor::On, 1));
+    /// assert_eq!(styled.color, BinaryColor::On);
     /// ```
     pub const fn stroke<C: PixelColor>(self, color: C) -> StyledLine<C> {
-        StyledLine {
-            line: self,
-            color,
-            width: 1,
-        }
+        StyledLine { line: self, color }
     }
 
     /// Calls `f` with the runs of the exact 1-pixel line inside `clip`, in
@@ -494,16 +490,98 @@ impl RunSource for LineAlgorithm {
     }
 }
 
-/// A [`Line`] with a colour and a width: a [`Drawable`](embedded_graphics_core::Drawable).
+/// A [`Line`] with a colour: the exact 1-pixel line, a
+/// [`Drawable`](embedded_graphics_core::Drawable).
 ///
-/// Width 1 (the default) draws the exact 1-pixel line, one
-/// [`fill_solid`](embedded_graphics_core::draw_target::DrawTarget::fill_solid) per [`Run`]. Width 0 draws
-/// nothing. Wider lines are filled rectangles (see the [module
-/// docs](self#thick-lines)) drawn with the triangle rasterizer, one
-/// `fill_solid` per row span. Widths above 65535 px draw as 65535 px.
-/// [`algorithm`](Self::algorithm) picks another 1-pixel algorithm as a
-/// [`StyledLineVariant`], a separate type, so that firmware drawing only
-/// exact lines links none of the variants.
+/// On a `DrawTarget` it is one
+/// [`fill_solid`](embedded_graphics_core::draw_target::DrawTarget::fill_solid)
+/// per [`Run`]; through a [`SpanSink`] the sink gets the whole line.
+/// [`stroke_width`](Self::stroke_width) makes a [`ThickLine`] and
+/// [`algorithm`](Self::algorithm) a [`StyledLineVariant`]: separate types,
+/// so that firmware drawing only exact 1-pixel lines links neither the
+/// thick lines (about 17 KiB of flash at `opt-level = "s"` on a
+/// Cortex-M4) nor the variants.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+/// use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, Line};
+///
+/// let mut fb = Framebuffer::<Gray8Bytes, 32, 32, { buffer_size::<Gray8Bytes>(32, 32) }>::new();
+/// Line::new(Point::new(2, 10), Point::new(20, 13)).stroke(Gray8::WHITE).draw(&mut fb)?;
+/// let lit = |x, y| fb.pixel(Point::new(x, y)) == Some(Gray8::WHITE);
+/// assert!(lit(2, 10) && lit(20, 13) && !lit(2, 11) && !lit(21, 13));
+/// # Ok::<(), core::convert::Infallible>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct StyledLine<C> {
+    /// The geometry.
+    pub line: Line,
+    /// The stroke colour.
+    pub color: C,
+}
+
+impl<C: Copy> StyledLine<C> {
+    /// This line `width` pixels wide, a [`ThickLine`].
+    ///
+    /// Any `u32`: 0 draws nothing; 1 is the same 1-pixel line; 2 and more
+    /// is a filled rectangle that wide (module docs, "Thick lines"),
+    /// widths over 65535 drawn as 65535.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::Line;
+    ///
+    /// let thick = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On).stroke_width(4);
+    /// assert_eq!(thick.width, 4);
+    /// ```
+    pub const fn stroke_width(self, width: u32) -> ThickLine<C> {
+        ThickLine {
+            line: self.line,
+            color: self.color,
+            width,
+        }
+    }
+
+    /// Sets the algorithm of 1-pixel lines.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
+    /// use embedded_raster::{Line, LineAlgorithm};
+    ///
+    /// let styled = Line::new(Point::zero(), Point::new(5, 2)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive);
+    /// assert_eq!((styled.algorithm, styled.width), (LineAlgorithm::Naive, 1));
+    /// ```
+    pub fn algorithm(self, algorithm: LineAlgorithm) -> StyledLineVariant<C> {
+        StyledLineVariant {
+            line: self.line,
+            color: self.color,
+            width: 1,
+            algorithm,
+        }
+    }
+}
+
+impl<C: PixelColor> SpanDrawable for StyledLine<C> {
+    type Color = C;
+
+    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
+        Exact.draw_thin(&self.line, false, self.color, sink)
+    }
+}
+
+/// A [`Line`] with a colour and a width, made by
+/// [`StyledLine::stroke_width`]: a [`Drawable`](embedded_graphics_core::Drawable).
+///
+/// Width 1 draws the exact 1-pixel line and width 0 nothing. Wider lines
+/// are filled rectangles (see the [module docs](self#thick-lines)) drawn
+/// with the triangle rasterizer, one span per row. Widths above 65535 px
+/// draw as 65535 px.
 ///
 /// # Examples
 ///
@@ -522,7 +600,7 @@ impl RunSource for LineAlgorithm {
 /// # Ok::<(), core::convert::Infallible>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct StyledLine<C> {
+pub struct ThickLine<C> {
     /// The geometry.
     pub line: Line,
     /// The stroke colour.
@@ -531,12 +609,9 @@ pub struct StyledLine<C> {
     pub width: u32,
 }
 
-impl<C> StyledLine<C> {
-    /// Sets the stroke width in pixels.
-    ///
-    /// Any `u32`: 0 draws nothing; 1 is the 1-pixel line; 2 and more is a
-    /// filled rectangle that wide (module docs, "Thick lines"), widths over
-    /// 65535 drawn as 65535.
+impl<C> ThickLine<C> {
+    /// Sets the stroke width in pixels (any `u32`, as
+    /// [`StyledLine::stroke_width`]).
     ///
     /// # Examples
     ///
@@ -544,15 +619,16 @@ impl<C> StyledLine<C> {
     /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::Line;
     ///
-    /// let styled = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On).stroke_width(4);
-    /// assert_eq!(styled.width, 4);
+    /// let thick = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On).stroke_width(4).stroke_width(2);
+    /// assert_eq!(thick.width, 2);
     /// ```
     pub const fn stroke_width(mut self, width: u32) -> Self {
         self.width = width;
         self
     }
 
-    /// Sets the algorithm of 1-pixel lines.
+    /// Sets the algorithm of the line where it is 1 pixel wide; wider
+    /// lines are the same rectangles whatever the algorithm.
     ///
     /// # Examples
     ///
@@ -560,8 +636,8 @@ impl<C> StyledLine<C> {
     /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
     /// use embedded_raster::{Line, LineAlgorithm};
     ///
-    /// let styled = Line::new(Point::zero(), Point::new(5, 2)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive);
-    /// assert_eq!(styled.algorithm, LineAlgorithm::Naive);
+    /// let s = Line::new(Point::zero(), Point::new(5, 2)).stroke(BinaryColor::On).stroke_width(3).algorithm(LineAlgorithm::Dda);
+    /// assert_eq!((s.algorithm, s.width), (LineAlgorithm::Dda, 3));
     /// ```
     pub fn algorithm(self, algorithm: LineAlgorithm) -> StyledLineVariant<C> {
         StyledLineVariant {
@@ -573,7 +649,7 @@ impl<C> StyledLine<C> {
     }
 }
 
-impl<C: PixelColor> SpanDrawable for StyledLine<C> {
+impl<C: PixelColor> SpanDrawable for ThickLine<C> {
     type Color = C;
 
     fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
@@ -664,7 +740,7 @@ impl<C: PixelColor> SpanDrawable for StyledLineVariant<C> {
     }
 }
 
-drawable_through_spans!(StyledLine, StyledLineVariant);
+drawable_through_spans!(StyledLine, ThickLine, StyledLineVariant);
 
 /// Draws one line (or polyline segment) into `sink`.
 fn draw_segment<C: PixelColor, S: SpanSink<C>>(
