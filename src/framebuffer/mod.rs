@@ -354,6 +354,16 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     /// With `merge`, if `xs` is every column and rows have no padding, all
     /// rows come as one slice holding one long row, and the pixel range
     /// covers them all.
+    /// [`fill_solid`](DrawTarget::fill_solid) of a rectangle of any
+    /// height, clipped.
+    #[inline(never)]
+    fn fill_rectangle(&mut self, area: &Rectangle, color: F::Color) {
+        if let Some((xs, ys)) = clip_to(area, &self.bounding_box()) {
+            let (rows, span) = self.rows_mut(xs, ys, true);
+            F::fill_rows(rows, span, color);
+        }
+    }
+
     fn rows_mut(
         &mut self,
         xs: Range<usize>,
@@ -423,6 +433,10 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
         Ok(())
     }
 
+    /// Inlined, so that a span from [`DrawTargetSink`] (one row) is
+    /// filled where it is made, as through the framebuffer's own
+    /// [`SpanSink`]; taller rectangles go to an out-of-line fill.
+    #[inline]
     fn fill_solid(&mut self, area: &Rectangle, color: F::Color) -> Result<(), Infallible> {
         if area.size.height == 1 {
             // One row, as `DrawTargetSink` sends spans: clipped as a span.
@@ -439,10 +453,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
             }
             return Ok(());
         }
-        if let Some((xs, ys)) = clip_to(area, &self.bounding_box()) {
-            let (rows, span) = self.rows_mut(xs, ys, true);
-            F::fill_rows(rows, span, color);
-        }
+        self.fill_rectangle(area, color);
         Ok(())
     }
 
