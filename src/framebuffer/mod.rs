@@ -433,7 +433,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
         Ok(())
     }
 
-    /// Inlined, so that a span from [`DrawTargetSink`] (one row) is
+    /// Inlined, so that a span from [`DrawTargetSink`](crate::DrawTargetSink) (one row) is
     /// filled where it is made, as through the framebuffer's own
     /// [`SpanSink`]; taller rectangles go to an out-of-line fill.
     #[inline]
