@@ -43,18 +43,7 @@ pub(crate) fn triangle_spans<E>(
         return Ok(());
     };
     match relative::<i32>(&frame, &v) {
-        Some(p) => {
-            // A small triangle's coordinates and differences lie below
-            // `SMALL` (the origin's centre is in its box); if its top lies
-            // below the sample line above the frame, no edge skips a row:
-            // what `Edge::new_small` needs.
-            let small = small && p[0].1 > -4096;
-            let edge = |a, b| match small {
-                true => Edge::new_small(a, b),
-                false => Edge::new(a, b, 0),
-            };
-            walk(&frame, p, edge, &mut emit)
-        }
+        Some(p) => walk(&frame, p, narrow_edges(small, &p), &mut emit),
         None => match relative::<i64>(&frame, &v) {
             Some(p) => walk(&frame, p, |a, b| Edge::new(a, b, 0), &mut emit),
             // Unreachable: every coordinate fits i64.
@@ -86,18 +75,19 @@ impl TriangleRows {
     /// triangle lights nothing there or needs the 64-bit path.
     #[inline(always)]
     pub(crate) fn new(vertices: &[Vertex; 3], clip: &Rectangle) -> Option<Self> {
-        let frame = Frame::around(vertices, clip)?;
         let mut v = *vertices;
         sort_by_y(&mut v);
+        let (frame, small) = Frame::around_sorted_triangle(&v, clip)?;
         let p = relative::<i32>(&frame, &v)?;
         let turn = orientation(p[0], p[1], p[2]);
         if turn == 0 {
             return None;
         }
+        let edge = narrow_edges(small, &p);
         Some(Self {
-            long: Edge::new(p[0], p[2], 0)?,
-            upper: Edge::new(p[0], p[1], 0),
-            lower: Edge::new(p[1], p[2], 0),
+            long: edge(p[0], p[2])?,
+            upper: edge(p[0], p[1]),
+            lower: edge(p[1], p[2]),
             short_left: turn < 0,
             row: 0,
             frame,
@@ -151,6 +141,23 @@ impl TriangleRows {
             }
             self.long.step();
         }
+    }
+}
+
+/// How the 32-bit edges of a triangle (`p`: relative, sorted by `y`) are
+/// set up. A small triangle's coordinates and differences lie below
+/// `SMALL` (the origin's centre is in its box); if its top also lies below
+/// the sample line of the row above the frame, no edge skips a row: what
+/// [`Edge::new_small`] needs. Otherwise the checked [`Edge::new`].
+#[inline(always)]
+fn narrow_edges(
+    small: bool,
+    p: &[(i32, i32); 3],
+) -> impl Fn((i32, i32), (i32, i32)) -> Option<Edge<i32>> {
+    let small = small && p[0].1 > -4096;
+    move |a, b| match small {
+        true => Edge::new_small(a, b),
+        false => Edge::new(a, b, 0),
     }
 }
 
