@@ -20,16 +20,14 @@ mod triangulate;
 use core::fmt;
 
 use embedded_graphics_core::{
-    draw_target::DrawTarget,
     geometry::{Point, Size},
     pixelcolor::PixelColor,
     primitives::Rectangle,
-    Drawable,
 };
 
 use crate::{
     clip::Bounds,
-    raster::sink::{DrawTargetSink, SpanDrawable, SpanSink},
+    raster::sink::{drawable_through_spans, SpanDrawable, SpanSink},
     span::Span,
     stroke::{Join, Outline, Stroke},
     triangle::Triangle,
@@ -366,9 +364,11 @@ impl<'a, const N: usize> Polygon<'a, N> {
 }
 
 /// A [`Polygon`] filled with one colour under a [`FillRule`]: a
-/// [`Drawable`] for any [`DrawTarget`]. Spans go to the target as
-/// [`fill_solid`](DrawTarget::fill_solid) calls; an axis-aligned rectangle
-/// is a single `fill_solid`.
+/// [`Drawable`](embedded_graphics_core::Drawable) for any
+/// [`DrawTarget`](embedded_graphics_core::draw_target::DrawTarget). Spans
+/// go to the target as
+/// [`fill_solid`](embedded_graphics_core::draw_target::DrawTarget::fill_solid)
+/// calls; an axis-aligned rectangle is a single `fill_solid`.
 ///
 /// # Examples
 ///
@@ -439,19 +439,7 @@ impl<C: PixelColor, const N: usize> SpanDrawable for FilledPolygon<'_, C, N> {
     }
 }
 
-impl<C: PixelColor, const N: usize> Drawable for FilledPolygon<'_, C, N> {
-    type Color = C;
-    type Output = ();
-
-    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        self.draw_spans(&mut DrawTargetSink::new(target))
-    }
-}
-
-/// The outline of a [`Polygon`] as a stroke: a [`Drawable`].
+/// The outline of a [`Polygon`] as a stroke: a [`Drawable`](embedded_graphics_core::Drawable).
 ///
 /// The closed thick polyline through the vertices (subpixel positions),
 /// `width` px wide, corners filled by the [`Join`], every pixel written
@@ -538,14 +526,4 @@ impl<C: PixelColor, const N: usize> SpanDrawable for StrokedPolygon<'_, C, N> {
     }
 }
 
-impl<C: PixelColor, const N: usize> Drawable for StrokedPolygon<'_, C, N> {
-    type Color = C;
-    type Output = ();
-
-    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        self.draw_spans(&mut DrawTargetSink::new(target))
-    }
-}
+drawable_through_spans!(FilledPolygon<'_, const N>, StrokedPolygon<'_, const N>);

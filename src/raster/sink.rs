@@ -258,12 +258,14 @@ impl<D: DrawTarget> DrawTarget for DrawTargetSink<'_, D> {
 }
 
 /// Implements [`Drawable`](embedded_graphics_core::Drawable) for a
-/// [`SpanDrawable`] with a `color` field's type parameter `C`: drawing on
-/// a `DrawTarget` is drawing spans on a [`DrawTargetSink`] of it.
+/// [`SpanDrawable`] with a `color` field's type parameter `C` (after a
+/// lifetime and before a `const` capacity, where it has them: `Type<'_,
+/// const N>`): drawing on a `DrawTarget` is drawing spans on a
+/// [`DrawTargetSink`] of it.
 macro_rules! drawable_through_spans {
-    ($($ty:ident $(<$lt:lifetime>)?),* $(,)?) => {$(
-        impl<C: embedded_graphics_core::pixelcolor::PixelColor>
-            embedded_graphics_core::Drawable for $ty<$($lt,)? C>
+    ($($ty:ident $(<$lt:lifetime $(, const $n:ident)?>)?),* $(,)?) => {$(
+        impl<C: embedded_graphics_core::pixelcolor::PixelColor $($(, const $n: usize)?)?>
+            embedded_graphics_core::Drawable for $ty<$($lt,)? C $($(, $n)?)?>
         {
             type Color = C;
             type Output = ();
