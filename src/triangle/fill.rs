@@ -14,7 +14,9 @@
 //! vertices lie within `2^29` raw units (131,072 px) of the frame's
 //! origin, which holds for every triangle whose bounding box spans under
 //! 2^29 raw units a side; products are taken in `i64` and divided in 32 bits
-//! when they fit. Otherwise everything runs in `i64` (products in `i128`),
+//! when they fit. Under 2^19 raw units (128 px) a side every product fits
+//! `i32` and the edges are set up unchecked ([`Edge::new_small`]).
+//! Otherwise everything runs in `i64` (products in `i128`),
 //! exact over the whole 20.12 range. A triangle outside the clip costs one
 //! bounding-box test.
 
