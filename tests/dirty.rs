@@ -99,3 +99,34 @@ fn flush_sends_exactly_the_changed_region() {
         );
     }
 }
+
+/// A target wider than a `Point` can address (`u32::MAX` columns) that
+/// draws nothing: only the size matters here.
+struct Wide;
+
+impl OriginDimensions for Wide {
+    fn size(&self) -> Size {
+        Size::new(u32::MAX, 4)
+    }
+}
+
+impl DrawTarget for Wide {
+    type Color = Gray8;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Gray8>>>(&mut self, _: I) -> Result<(), Self::Error> {
+        Ok(())
+    }
+}
+
+/// A fill reaching past column 2^31 is reported only up to it, from a
+/// non-negative column: the region names pixels a `Point` can reach.
+#[test]
+fn regions_stay_within_point_coordinates() {
+    let mut screen = DirtyRows::<_, 4>::new(Wide);
+    let far = Rectangle::new(Point::new(i32::MAX - 9, 1), Size::new(u32::MAX, 2));
+    screen.fill_solid(&far, Gray8::WHITE).unwrap();
+    let regions: Vec<Rectangle> = screen.changed().collect();
+    let want = Rectangle::new(Point::new(i32::MAX - 9, 1), Size::new(10, 2));
+    assert_eq!(regions, [want]);
+}

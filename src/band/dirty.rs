@@ -123,7 +123,8 @@ impl<T: OriginDimensions, const H: usize> DirtyRows<T, H> {
                 (start, end) = (start.min(s), end.max(e));
                 y += 1;
             }
-            // Rows and columns of the target: they fit `i32` and `u32`.
+            // Marked rows and columns lie below 2^31 (`mark_rows`): they
+            // fit `i32`.
             let top_left = Point::new(start as i32, first as i32);
             Some(Rectangle::new(
                 top_left,
@@ -184,11 +185,19 @@ impl<T: OriginDimensions + GetPixel, const H: usize> DirtyRows<T, H> {
 /// Marks the part of `area` on a target of `size` as changed in `rows`
 /// (one column range per row; rows from `H` down are not recorded).
 fn mark_rows<const H: usize>(rows: &mut [(u32, u32); H], size: Size, area: &Rectangle) {
-    let own = Rectangle::new(Point::zero(), size);
-    let Some(b) = Bounds::of(area).intersect(Bounds::of(&own)) else {
+    // The target's pixels a `Point` can name (coordinates below 2^31):
+    // the rectangles `changed` reports start at `i32` coordinates.
+    let addressable = Bounds {
+        x0: 0,
+        y0: 0,
+        x1: 1 << 31,
+        y1: 1 << 31,
+    };
+    let own = Bounds::of(&Rectangle::new(Point::zero(), size)).intersect(addressable);
+    let Some(b) = own.and_then(|own| Bounds::of(area).intersect(own)) else {
         return;
     };
-    // Inside the target, whose sides are `u32`: every value fits.
+    // Within 0..=2^31: every value fits `u32` and `usize`.
     let (x0, x1) = (b.x0 as u32, b.x1 as u32);
     let ys = b.y0 as usize..(b.y1 as usize).min(H);
     for (start, end) in rows.get_mut(ys).unwrap_or_default() {
