@@ -50,19 +50,65 @@ impl Frame {
         Self::of_box(lo, hi, clip)
     }
 
-    /// [`around`](Self::around) a triangle whose vertices are sorted by
-    /// `y` (the first and last give the box's top and bottom), and
-    /// whether its bounding box spans under [`SMALL`] raw units a side.
+    /// The frame of a small triangle whose vertices are sorted by `y`,
+    /// and its vertices relative to the frame, if its bounding box spans
+    /// under [`SMALL`] raw units a side and the first pixel centres at or
+    /// after its top-left corner lie in `clip`: the common on-screen
+    /// triangle, set up without any check beyond these.
+    ///
+    /// The frame starts at those first centres and reaches to the clip's
+    /// right and bottom edges: the triangle's edges end its rows and
+    /// columns there, so nothing beyond its box is walked. Its top vertex
+    /// lies less than one row above the origin's centre, and every
+    /// relative coordinate lies within `-4096..SMALL` (the origin's
+    /// centre is at most 4095 raw units past the box's corner): what
+    /// [`Edge::new_small`](super::edge::Edge::new_small) needs.
     #[inline(always)]
-    pub(crate) fn around_sorted_triangle(
+    pub(crate) fn of_small_triangle(
         v: &[Vertex; 3],
         clip: &Rectangle,
-    ) -> Option<(Self, bool)> {
-        let x = v.map(|v| v.raw().0);
-        let lo = (x[0].min(x[1]).min(x[2]), v[0].raw().1);
-        let hi = (x[0].max(x[1]).max(x[2]), v[2].raw().1);
-        let small = hi.0.abs_diff(lo.0) < SMALL as u32 && hi.1.abs_diff(lo.1) < SMALL as u32;
-        Some((Self::of_box(lo, hi, clip)?, small))
+    ) -> Option<(Self, [(i32, i32); 3])> {
+        let [a, b, c] = v.map(|v| v.raw());
+        let left = a.0.min(b.0).min(c.0);
+        let right = a.0.max(b.0).max(c.0);
+        if right.abs_diff(left) >= SMALL as u32 || c.1.abs_diff(a.1) >= SMALL as u32 {
+            return None;
+        }
+        let origin = Point::new(
+            first_centre_at_or_after(left),
+            first_centre_at_or_after(a.1),
+        );
+        // A first centre at 2^19 px lies past every raw coordinate (and
+        // its centre past i32): the box holds no centre, and nothing is
+        // drawn, by the checked path.
+        if origin.x < clip.top_left.x
+            || origin.y < clip.top_left.y
+            || origin.x.max(origin.y) >= 1 << 19
+        {
+            return None;
+        }
+        // The clip's columns (rows) from the origin on: its size less the
+        // origin's distance past its near edge (exact in u32, the origin
+        // being at or past it), held in i32.
+        let rest = |at: i32, start: i32, len: u32| {
+            let rest = len.checked_sub(at.abs_diff(start)).filter(|&n| n > 0)?;
+            Some(i32::try_from(rest).unwrap_or(i32::MAX))
+        };
+        let width = rest(origin.x, clip.top_left.x, clip.size.width)?;
+        let height = rest(origin.y, clip.top_left.y, clip.size.height)?;
+        // The origin's pixel lies within -2^19..2^19: its centre fits i32, and
+        // lies in the box or at most 4095 raw units past its near corner,
+        // so each difference below lies within -4096..SMALL.
+        let centre = (origin.x * 4096 + 2048, origin.y * 4096 + 2048);
+        let relative = |p: (i32, i32)| (p.0 - centre.0, p.1 - centre.1);
+        let frame = Self {
+            origin,
+            width,
+            height,
+            centre,
+            near: true,
+        };
+        Some((frame, [relative(a), relative(b), relative(c)]))
     }
 
     /// The frame of the box `lo..=hi` (raw) inside `clip`.

@@ -41,17 +41,25 @@ pub(crate) fn triangle_spans<E>(
 ) -> Result<(), E> {
     let mut v = *vertices;
     sort_by_y(&mut v);
-    let Some((frame, small)) = Frame::around_sorted_triangle(&v, clip) else {
-        return Ok(());
+    let (frame, p, small) = match Frame::of_small_triangle(&v, clip) {
+        Some((frame, p)) => (frame, p, true),
+        None => {
+            let Some(frame) = Frame::around(&v, clip) else {
+                return Ok(());
+            };
+            match relative::<i32>(&frame, &v) {
+                Some(p) => (frame, p, false),
+                None => {
+                    return match relative::<i64>(&frame, &v) {
+                        Some(p) => walk(&frame, p, |a, b| Edge::new(a, b, 0), &mut emit),
+                        // Unreachable: every coordinate fits i64.
+                        None => Ok(()),
+                    };
+                }
+            }
+        }
     };
-    match relative::<i32>(&frame, &v) {
-        Some(p) => walk(&frame, p, narrow_edges(small, &p), &mut emit),
-        None => match relative::<i64>(&frame, &v) {
-            Some(p) => walk(&frame, p, |a, b| Edge::new(a, b, 0), &mut emit),
-            // Unreachable: every coordinate fits i64.
-            None => Ok(()),
-        },
-    }
+    walk(&frame, p, narrow_edges(small), &mut emit)
 }
 
 /// A triangle's rows inside a clip, walked a window of rows at a time:
@@ -79,13 +87,18 @@ impl TriangleRows {
     pub(crate) fn new(vertices: &[Vertex; 3], clip: &Rectangle) -> Option<Self> {
         let mut v = *vertices;
         sort_by_y(&mut v);
-        let (frame, small) = Frame::around_sorted_triangle(&v, clip)?;
-        let p = relative::<i32>(&frame, &v)?;
+        let (frame, p, small) = match Frame::of_small_triangle(&v, clip) {
+            Some((frame, p)) => (frame, p, true),
+            None => {
+                let frame = Frame::around(&v, clip)?;
+                (frame, relative::<i32>(&frame, &v)?, false)
+            }
+        };
         let turn = orientation(p[0], p[1], p[2]);
         if turn == 0 {
             return None;
         }
-        let edge = narrow_edges(small, &p);
+        let edge = narrow_edges(small);
         Some(Self {
             long: edge(p[0], p[2])?,
             upper: edge(p[0], p[1]),
@@ -146,17 +159,11 @@ impl TriangleRows {
     }
 }
 
-/// How the 32-bit edges of a triangle (`p`: relative, sorted by `y`) are
-/// set up. A small triangle's coordinates and differences lie below
-/// `SMALL` (the origin's centre is in its box); if its top also lies below
-/// the sample line of the row above the frame, no edge skips a row: what
-/// [`Edge::new_small`] needs. Otherwise the checked [`Edge::new`].
+/// How the 32-bit edges of a triangle are set up: unchecked
+/// ([`Edge::new_small`]) for the frame and coordinates of
+/// [`Frame::of_small_triangle`], else checked ([`Edge::new`]).
 #[inline(always)]
-fn narrow_edges(
-    small: bool,
-    p: &[(i32, i32); 3],
-) -> impl Fn((i32, i32), (i32, i32)) -> Option<Edge<i32>> {
-    let small = small && p[0].1 > -4096;
+fn narrow_edges(small: bool) -> impl Fn((i32, i32), (i32, i32)) -> Option<Edge<i32>> {
     move |a, b| match small {
         true => Edge::new_small(a, b),
         false => Edge::new(a, b, 0),
