@@ -164,6 +164,7 @@ impl TriangleRows {
 /// [`Frame::of_small_triangle`], else checked ([`Edge::new`]).
 #[inline(always)]
 fn narrow_edges(small: bool) -> impl Fn((i32, i32), (i32, i32)) -> Option<Edge<i32>> {
+    #[inline(always)]
     move |a, b| match small {
         true => Edge::new_small(a, b),
         false => Edge::new(a, b, 0),
