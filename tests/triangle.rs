@@ -223,6 +223,33 @@ fn clip_rectangles_at_the_ends_of_i32() {
     }
 }
 
+/// Small triangles (the shorter setup) slid across every edge of a small
+/// window at fractional offsets: whether their top-left corner's first
+/// pixel centres fall inside the window, on its edge or outside it, and
+/// whether they reach past its right and bottom edges, the pixels are the
+/// reference's.
+#[test]
+fn small_triangles_across_the_clip_edges() {
+    let shapes = [
+        [(0, 0), (5 * 4096 + 700, 1200), (1500, 4 * 4096 + 3000)],
+        [
+            (2048, 2048),
+            (2048, 6 * 4096 + 2048),
+            (-3 * 4096 - 5, 3 * 4096),
+        ],
+        [(100, 4095), (3 * 4096, 4096), (4096, 2 * 4096 + 1)],
+    ];
+    for shape in shapes {
+        for dy in (-9 * 4096..9 * 4096).step_by(1367) {
+            for dx in (-9 * 4096..9 * 4096).step_by(1367) {
+                let at = |(x, y): (i64, i64)| v(x + dx, y + dy);
+                let t = Triangle::new(at(shape[0]), at(shape[1]), at(shape[2]));
+                assert_exact(&t, 0, 0, 6, 5);
+            }
+        }
+    }
+}
+
 #[test]
 fn stops_at_the_first_error() {
     let t = Triangle::new(v(0, 0), v(40960, 0), v(0, 40960));

@@ -6,9 +6,12 @@ use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 use super::{edge::SMALL, wide::Wide};
 use crate::vertex::Vertex;
 
-/// The pixels of a clip rectangle whose centres lie in a shape's bounding
-/// box (the only ones the sampling rule can light), with the shape's raw
-/// coordinates measured from the centre of the top-left one.
+/// A rectangle of a clip's pixels holding every pixel whose centre lies
+/// in a shape's bounding box (the only ones the sampling rule can light),
+/// with the shape's raw coordinates measured from the centre of its
+/// top-left pixel. [`around`](Self::around) gives exactly those pixels;
+/// [`of_small_triangle`](Self::of_small_triangle) reaches on to the
+/// clip's right and bottom edges.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Frame {
     /// Top-left pixel.

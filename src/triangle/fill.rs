@@ -14,11 +14,14 @@
 //! vertices lie within `2^29` raw units (131,072 px) of the frame's
 //! origin, which holds for every triangle whose bounding box spans under
 //! 2^29 raw units a side; products are taken in `i64` and divided in 32 bits
-//! when they fit. Under 2^19 raw units (128 px) a side every product fits
-//! `i32` and the edges are set up unchecked ([`Edge::new_small`]).
-//! Otherwise everything runs in `i64` (products in `i128`),
-//! exact over the whole 20.12 range. A triangle outside the clip costs one
-//! bounding-box test.
+//! when they fit. The common on-screen triangle, under 2^19 raw units
+//! (128 px) a side with its top-left corner's first pixel centres inside
+//! the clip, takes a shorter setup: its frame is found from those centres
+//! alone ([`Frame::of_small_triangle`]), its relative coordinates need no
+//! check, and every product fits `i32`, so its edges are set up unchecked
+//! ([`Edge::new_small`]). Otherwise everything runs in `i64` (products in
+//! `i128`), exact over the whole 20.12 range. A triangle outside the clip
+//! costs one bounding-box test.
 
 use embedded_graphics_core::primitives::Rectangle;
 
@@ -41,25 +44,39 @@ pub(crate) fn triangle_spans<E>(
 ) -> Result<(), E> {
     let mut v = *vertices;
     sort_by_y(&mut v);
-    let (frame, p, small) = match Frame::of_small_triangle(&v, clip) {
-        Some((frame, p)) => (frame, p, true),
-        None => {
-            let Some(frame) = Frame::around(&v, clip) else {
-                return Ok(());
-            };
-            match relative::<i32>(&frame, &v) {
-                Some(p) => (frame, p, false),
-                None => {
-                    return match relative::<i64>(&frame, &v) {
-                        Some(p) => walk(&frame, p, |a, b| Edge::new(a, b, 0), &mut emit),
-                        // Unreachable: every coordinate fits i64.
-                        None => Ok(()),
-                    };
-                }
-            }
-        }
-    };
-    walk(&frame, p, narrow_edges(small), &mut emit)
+    match place(&v, clip) {
+        Some(Placed::Narrow(frame, p, small)) => walk(&frame, p, narrow_edges(small), &mut emit),
+        Some(Placed::Wide(frame)) => match relative::<i64>(&frame, &v) {
+            Some(p) => walk(&frame, p, |a, b| Edge::new(a, b, 0), &mut emit),
+            // Unreachable: every coordinate fits i64.
+            None => Ok(()),
+        },
+        None => Ok(()),
+    }
+}
+
+/// Where a triangle is walked: its frame, and its vertices relative to it
+/// in `i32` if they fit.
+enum Placed {
+    /// The vertices fit `i32`; `true` if they are those of
+    /// [`Frame::of_small_triangle`].
+    Narrow(Frame, [(i32, i32); 3], bool),
+    /// They need `i64`.
+    Wide(Frame),
+}
+
+/// Places the triangle `v` (sorted by `y`) inside `clip`; `None` if it
+/// lights nothing there.
+#[inline(always)]
+fn place(v: &[Vertex; 3], clip: &Rectangle) -> Option<Placed> {
+    if let Some((frame, p)) = Frame::of_small_triangle(v, clip) {
+        return Some(Placed::Narrow(frame, p, true));
+    }
+    let frame = Frame::around(v, clip)?;
+    Some(match relative::<i32>(&frame, v) {
+        Some(p) => Placed::Narrow(frame, p, false),
+        None => Placed::Wide(frame),
+    })
 }
 
 /// A triangle's rows inside a clip, walked a window of rows at a time:
@@ -87,12 +104,8 @@ impl TriangleRows {
     pub(crate) fn new(vertices: &[Vertex; 3], clip: &Rectangle) -> Option<Self> {
         let mut v = *vertices;
         sort_by_y(&mut v);
-        let (frame, p, small) = match Frame::of_small_triangle(&v, clip) {
-            Some((frame, p)) => (frame, p, true),
-            None => {
-                let frame = Frame::around(&v, clip)?;
-                (frame, relative::<i32>(&frame, &v)?, false)
-            }
+        let Placed::Narrow(frame, p, small) = place(&v, clip)? else {
+            return None;
         };
         let turn = orientation(p[0], p[1], p[2]);
         if turn == 0 {
