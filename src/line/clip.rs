@@ -48,7 +48,7 @@
 //! offsets first limited to `0..=dminor`, every product is below `2^67`).
 //! A line whose ends lie inside the clip rectangle takes the textbook
 //! start, `D = 2 dminor - dmajor - b`, without any division or clip
-//! arithmetic.
+//! arithmetic, and is put in canonical form in 32 bits.
 
 use crate::raster::wide::Wide;
 
@@ -144,31 +144,83 @@ impl Canonical {
         }
     }
 
-    /// The exactly clipped visible part, or `None` if no pixel of the line
-    /// lies inside `clip`.
+    /// The canonical form of the line from `start` to `end` and all of it
+    /// (without the pixel at `end` if `skip_end`), if both ends lie inside
+    /// `clip`: the clip is convex and the line monotonic, so no pixel is
+    /// cut. The textbook start `D = 2 dminor - dmajor - b`, without
+    /// division or clip arithmetic, moved on by one Bresenham step when the
+    /// skipped end is the first; everything but `D` in 32 bits (the ends'
+    /// distances from the clip's corner and from each other are taken as
+    /// `u32`). `None` if an end lies outside `clip` or no pixel is left:
+    /// [`visible`](Self::visible) then clips.
     #[inline]
-    pub fn visible(&self, clip: &Rectangle, skip_end: bool) -> Option<Visible> {
-        let b = Bounds::of(clip);
-        let inside = |major: i64, minor: i64| {
-            let (x, y) = if self.x_major {
-                (major, minor)
-            } else {
-                (minor, major)
-            };
-            b.x0 <= x && x < b.x1 && b.y0 <= y && y < b.y1
+    pub fn inside(
+        start: Point,
+        end: Point,
+        clip: &Rectangle,
+        skip_end: bool,
+    ) -> Option<(Self, Visible)> {
+        let corner = clip.top_left;
+        let within = |p: Point| {
+            p.x >= corner.x
+                && p.y >= corner.y
+                && p.x.abs_diff(corner.x) < clip.size.width
+                && p.y.abs_diff(corner.y) < clip.size.height
         };
-        let last_minor = self.minor0 + self.minor_step * self.dminor;
-        if inside(self.major0, self.minor0) && inside(self.major0 + self.dmajor, last_minor) {
-            return self.unclipped(skip_end);
+        if !(within(start) && within(end)) {
+            return None;
         }
-        self.clipped(clip, skip_end)
+        let (adx, ady) = (end.x.abs_diff(start.x), end.y.abs_diff(start.y));
+        let x_major = adx >= ady;
+        let (dmajor, dminor) = if x_major { (adx, ady) } else { (ady, adx) };
+        let along = |p: Point| if x_major { (p.x, p.y) } else { (p.y, p.x) };
+        let reversed = along(end).0 < along(start).0;
+        let (first, last) = match reversed {
+            true => (along(end), along(start)),
+            false => (along(start), along(end)),
+        };
+        let minor_step = if last.1 < first.1 { -1 } else { 1 };
+        let (two_minor, two_major) = (2 * i64::from(dminor), 2 * i64::from(dmajor));
+        let mut d = two_minor - i64::from(dmajor) - i64::from(minor_step > 0);
+        let mut visible = Visible {
+            first_major: first.0,
+            last_major: last.0,
+            first_minor: first.1,
+            decision: 0,
+        };
+        if skip_end && first.0 == last.0 {
+            return None;
+        }
+        // Pixels of the line lie in the clip: neither step leaves i32.
+        if skip_end && reversed {
+            visible.first_major += 1;
+            if d >= 0 {
+                visible.first_minor += minor_step;
+                d -= two_major;
+            }
+            d += two_minor;
+        } else if skip_end {
+            visible.last_major -= 1;
+        }
+        visible.decision = d;
+        let line = Self {
+            x_major,
+            major0: first.0.into(),
+            minor0: first.1.into(),
+            dmajor: dmajor.into(),
+            dminor: dminor.into(),
+            minor_step: minor_step.into(),
+            reversed,
+        };
+        Some((line, visible))
     }
 
-    /// [`visible`](Self::visible) for a line with an end outside the
-    /// clip. Out of line: its frame is large, and lines inside the clip
-    /// need not set it up.
+    /// The exactly clipped visible part, or `None` if no pixel of the line
+    /// lies inside `clip`; for any line, but lines inside the clip are
+    /// found faster by [`inside`](Self::inside). Out of line: its frame
+    /// is large.
     #[inline(never)]
-    fn clipped(&self, clip: &Rectangle, skip_end: bool) -> Option<Visible> {
+    pub fn visible(&self, clip: &Rectangle, skip_end: bool) -> Option<Visible> {
         let (lo, hi) = self.major_steps(clip, skip_end)?;
         // The clip's minor range as offsets m, limited to the line's own
         // offsets 0..=dminor (which changes no step range: m(0) = 0 and
@@ -184,30 +236,6 @@ impl Canonical {
         } else {
             self.entry::<i128>(lo, hi, m_lo, m_hi)?
         };
-        self.steps(lo, hi, m, d)
-    }
-
-    /// [`visible`](Self::visible) for a line whose ends lie inside the
-    /// clip, and so every pixel (the clip is convex, the line monotonic):
-    /// the textbook start `D = 2 dminor - dmajor - b`, without division,
-    /// moved on by one Bresenham step when the skipped end is the first.
-    fn unclipped(&self, skip_end: bool) -> Option<Visible> {
-        let (two_minor, two_major) = (2 * self.dminor, 2 * self.dmajor);
-        let mut d = two_minor - self.dmajor - i64::from(self.minor_step > 0);
-        let (mut lo, mut hi, mut m) = (0, self.dmajor, 0);
-        if skip_end && self.reversed {
-            lo = 1;
-            if d >= 0 {
-                m = 1;
-                d -= two_major;
-            }
-            d += two_minor;
-        } else if skip_end {
-            hi -= 1;
-        }
-        if lo > hi {
-            return None;
-        }
         self.steps(lo, hi, m, d)
     }
 

@@ -420,8 +420,14 @@ impl Line {
     /// The exact (Bresenham) pixels, without the pixel at `end` if
     /// `skip_end`.
     fn exact_pixels(&self, clip: &Rectangle, skip_end: bool) -> Option<LinePixels> {
-        let c = Canonical::new(self.start, self.end);
-        Some(LinePixels::new(&c, c.visible(clip, skip_end)?))
+        let (c, v) = match Canonical::inside(self.start, self.end, clip, skip_end) {
+            Some(inside) => inside,
+            None => {
+                let c = Canonical::new(self.start, self.end);
+                (c, c.visible(clip, skip_end)?)
+            }
+        };
+        Some(LinePixels::new(&c, v))
     }
 
     /// The exact (Bresenham) runs, without the pixel at `end` if `skip_end`.
@@ -431,9 +437,8 @@ impl Line {
         skip_end: bool,
         f: &mut impl FnMut(Run) -> Result<(), E>,
     ) -> Result<(), E> {
-        let c = Canonical::new(self.start, self.end);
-        match c.visible(clip, skip_end) {
-            Some(v) => bresenham::runs(&LinePixels::new(&c, v), f),
+        match self.exact_pixels(clip, skip_end) {
+            Some(pixels) => bresenham::runs(&pixels, f),
             None => Ok(()),
         }
     }
