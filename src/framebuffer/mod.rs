@@ -531,11 +531,12 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
         self.fill_solid(area, color)
     }
 
-    /// Shallow lines (under one step down per four pixels) go as spans;
-    /// the others are walked pixel by pixel through the bytes
+    /// Lines with long runs (axis-aligned ones, and shallow ones under one
+    /// step down per four pixels) go as spans and columns; the others are
+    /// walked pixel by pixel through the bytes
     /// ([`PixelFormat::fill_line`]).
     fn fill_line(&mut self, pixels: LinePixels, color: F::Color) -> Result<(), Infallible> {
-        if pixels.has_long_spans() {
+        if pixels.has_long_runs() {
             return pixels.for_each_run(|run| fill_run(self, run, color));
         }
         F::fill_line(&mut self.data.0, Self::STRIDE, pixels, color);

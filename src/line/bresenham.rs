@@ -44,6 +44,12 @@ fn step<T: Wide, const X_MAJOR: bool, E>(
     };
     let s = p.minor_step;
     let (mut major, last, mut minor) = (p.first_major, p.last_major, p.first_minor);
+    if p.dminor == 0 {
+        // An axis-aligned line never moves along its minor axis (its
+        // decision stays below 2 dminor = 0): one run, found without
+        // stepping.
+        return emit(Run::along(X_MAJOR, major, last, minor));
+    }
     let mut start = major;
     loop {
         if major == last {
@@ -216,10 +222,11 @@ impl LinePixels {
         runs(self, &mut f)
     }
 
-    /// Whether the line is x-major and moves along its minor axis less
-    /// than once per four pixels, so that its runs are long spans.
-    pub(crate) fn has_long_spans(&self) -> bool {
-        self.x_major && self.dminor.saturating_mul(4) < self.dmajor
+    /// Whether the line's runs are long: it is axis-aligned (one run), or
+    /// x-major and moves along its minor axis less than once per four
+    /// pixels (spans of four pixels or more).
+    pub(crate) fn has_long_runs(&self) -> bool {
+        self.dminor == 0 || (self.x_major && self.dminor.saturating_mul(4) < self.dmajor)
     }
 
     /// Whether the line is x-major (one pixel per column).
