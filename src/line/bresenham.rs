@@ -226,7 +226,8 @@ impl LinePixels {
     /// x-major and moves along its minor axis less than once per four
     /// pixels (spans of four pixels or more).
     pub(crate) fn has_long_runs(&self) -> bool {
-        self.dminor == 0 || (self.x_major && self.dminor.saturating_mul(4) < self.dmajor)
+        // dminor < 2^32: four times it fits i64.
+        self.dminor == 0 || (self.x_major && 4 * self.dminor < self.dmajor)
     }
 
     /// Whether the line is x-major (one pixel per column).
