@@ -48,7 +48,7 @@
 //! offsets first limited to `0..=dminor`, every product is below `2^67`).
 //! A line whose ends lie inside the clip rectangle takes the textbook
 //! start, `D = 2 dminor - dmajor - b`, without any division or clip
-//! arithmetic, and is put in canonical form in 32 bits.
+//! arithmetic, after a 32-bit test of its ends against the clip.
 
 use crate::raster::wide::Wide;
 
@@ -147,12 +147,12 @@ impl Canonical {
     /// The canonical form of the line from `start` to `end` and all of it
     /// (without the pixel at `end` if `skip_end`), if both ends lie inside
     /// `clip`: the clip is convex and the line monotonic, so no pixel is
-    /// cut. The textbook start `D = 2 dminor - dmajor - b`, without
-    /// division or clip arithmetic, moved on by one Bresenham step when the
-    /// skipped end is the first; everything but `D` in 32 bits (the ends'
-    /// distances from the clip's corner and from each other are taken as
-    /// `u32`). `None` if an end lies outside `clip` or no pixel is left:
-    /// [`visible`](Self::visible) then clips.
+    /// cut. The ends are tested against the clip in 32 bits (their
+    /// distances from its corner taken as `u32`), and the visible part is
+    /// the textbook start `D = 2 dminor - dmajor - b`, without division or
+    /// clip arithmetic, moved on by one Bresenham step when the skipped end
+    /// is the first. `None` if an end lies outside `clip` or no pixel is
+    /// left: [`visible`](Self::visible) then clips.
     #[inline]
     pub fn inside(
         start: Point,
@@ -170,32 +170,27 @@ impl Canonical {
         if !(within(start) && within(end)) {
             return None;
         }
-        let (adx, ady) = (end.x.abs_diff(start.x), end.y.abs_diff(start.y));
-        let x_major = adx >= ady;
-        let (dmajor, dminor) = if x_major { (adx, ady) } else { (ady, adx) };
-        let along = |p: Point| if x_major { (p.x, p.y) } else { (p.y, p.x) };
-        let reversed = along(end).0 < along(start).0;
-        let (first, last) = match reversed {
-            true => (along(end), along(start)),
-            false => (along(start), along(end)),
-        };
-        let minor_step = if last.1 < first.1 { -1 } else { 1 };
-        let (two_minor, two_major) = (2 * i64::from(dminor), 2 * i64::from(dmajor));
-        let mut d = two_minor - i64::from(dmajor) - i64::from(minor_step > 0);
+        let line = Self::new(start, end);
+        let (two_minor, two_major) = (2 * line.dminor, 2 * line.dmajor);
+        let mut d = two_minor - line.dmajor - i64::from(line.minor_step > 0);
+        // Both ends lie in the clip, and so every pixel of the line: the
+        // coordinates below are `i32`.
+        let at = |v: i64| i32::try_from(v).ok();
+        let (first, last) = (at(line.major0)?, at(line.major0 + line.dmajor)?);
         let mut visible = Visible {
-            first_major: first.0,
-            last_major: last.0,
-            first_minor: first.1,
+            first_major: first,
+            last_major: last,
+            first_minor: at(line.minor0)?,
             decision: 0,
         };
-        if skip_end && first.0 == last.0 {
+        if skip_end && first == last {
             return None;
         }
         // Pixels of the line lie in the clip: neither step leaves i32.
-        if skip_end && reversed {
+        if skip_end && line.reversed {
             visible.first_major += 1;
             if d >= 0 {
-                visible.first_minor += minor_step;
+                visible.first_minor += if line.minor_step > 0 { 1 } else { -1 };
                 d -= two_major;
             }
             d += two_minor;
@@ -203,15 +198,6 @@ impl Canonical {
             visible.last_major -= 1;
         }
         visible.decision = d;
-        let line = Self {
-            x_major,
-            major0: first.0.into(),
-            minor0: first.1.into(),
-            dmajor: dmajor.into(),
-            dminor: dminor.into(),
-            minor_step: minor_step.into(),
-            reversed,
-        };
         Some((line, visible))
     }
 
