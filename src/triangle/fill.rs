@@ -21,7 +21,8 @@
 //! check, and every product fits `i32`, so its edges are set up unchecked
 //! ([`Edge::new_small`]). Otherwise everything runs in `i64` (products in
 //! `i128`), exact over the whole 20.12 range. A triangle outside the clip
-//! costs one bounding-box test.
+//! costs its bounding-box tests (the small frame's, then the checked
+//! one's), and nothing is set up.
 
 use embedded_graphics_core::primitives::Rectangle;
 
