@@ -60,17 +60,10 @@ pub(super) fn bresenham_walk_spans<E>(
     clip: &Rectangle,
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
-    let mut p = v.map(|v| {
-        let (x, y) = v.raw();
-        (i64::from(x) >> 12, i64::from(y) >> 12)
-    });
-    p.sort_unstable_by_key(|t| (t.1, t.0));
-    let [top, mid, bot] = p;
-    let cross = (mid.0 - top.0) * (bot.1 - top.1) - (mid.1 - top.1) * (bot.0 - top.0);
-    if cross == 0 {
-        // Collinear pixels (also a triangle inside one pixel): nothing.
+    // Collinear pixels (also a triangle inside one pixel): nothing.
+    let Some(([top, mid, bot], _)) = super::sorted_with_turn(v, 12) else {
         return Ok(());
-    }
+    };
     let c = Bounds::of(clip);
     let (j0, j1) = (top.1.max(c.y0), bot.1.min(c.y1 - 1));
     if j0 > j1 {

@@ -16,7 +16,7 @@ use core::fmt;
 
 use embedded_graphics_core::primitives::Rectangle;
 
-use crate::{span::Span, vertex::Vertex};
+use crate::{raster::wide::orientation, span::Span, vertex::Vertex};
 
 /// How a [`Triangle`](crate::Triangle) is turned into spans.
 ///
@@ -307,4 +307,19 @@ pub(crate) fn variant_spans<E>(
             bresenham_walk::bresenham_walk_spans(&v, clip, &mut emit)
         }
     }
+}
+
+/// The walks' common start: the vertices as `i64` raw units shifted right
+/// by `shift` (0 keeps them, 12 takes the pixel holding each), sorted top
+/// to bottom and left to right within a row, with their orientation
+/// (the raster core's, exact: the coordinates are far below `2^62`);
+/// `None` when they are collinear, so that no pixel is lit.
+fn sorted_with_turn(v: &[Vertex; 3], shift: u32) -> Option<([(i64, i64); 3], i128)> {
+    let mut p = v.map(|v| {
+        let (x, y) = v.raw();
+        (i64::from(x) >> shift, i64::from(y) >> shift)
+    });
+    p.sort_unstable_by_key(|t| (t.1, t.0));
+    let turn = orientation(p[0], p[1], p[2]);
+    (turn != 0).then_some((p, turn))
 }

@@ -18,7 +18,7 @@
 
 use embedded_graphics_core::primitives::Rectangle;
 
-use crate::{clip::Bounds, raster::wide::orientation, span::Span, vertex::Vertex};
+use crate::{clip::Bounds, span::Span, vertex::Vertex};
 
 /// Fractional bits of x positions and slopes.
 const FRAC: u32 = 16;
@@ -66,17 +66,9 @@ pub(super) fn edge_walk_spans<E>(
     clip: &Rectangle,
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
-    let mut p = v.map(|v| {
-        let (x, y) = v.raw();
-        (i64::from(x), i64::from(y))
-    });
-    p.sort_unstable_by_key(|t| (t.1, t.0));
-    let [top, mid, bot] = p;
-    // The raster core's orientation: raw coordinates are far below 2^62.
-    let cross = orientation(top, mid, bot);
-    if cross == 0 {
+    let Some(([top, mid, bot], cross)) = super::sorted_with_turn(v, 0) else {
         return Ok(());
-    }
+    };
     let long_left = cross > 0;
     let c = Bounds::of(clip);
     let long = Edge::new(top, bot);
