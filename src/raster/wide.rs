@@ -7,8 +7,8 @@
 //! wrapping: nothing here relies on wraparound, and every conversion down
 //! is checked.
 
-use core::{fmt::Debug, num::NonZeroU32};
 use core::ops::{Add, Mul, Neg, Shr, Sub};
+use core::{fmt::Debug, num::NonZeroU32};
 
 /// A signed integer the raster core computes in: `i32`, `i64` or `i128`.
 pub(crate) trait Wide:
@@ -44,7 +44,10 @@ pub(crate) trait Wide:
 
 macro_rules! impl_wide {
     ($t:ty, $difference:expr) => {
-        impl_wide!($t, $difference, |n: $t, d: $t| (n.div_euclid(d), n.rem_euclid(d)));
+        impl_wide!($t, $difference, |n: $t, d: $t| (
+            n.div_euclid(d),
+            n.rem_euclid(d)
+        ));
     };
     ($t:ty, $difference:expr, $floor:expr) => {
         impl Wide for $t {
@@ -97,9 +100,13 @@ impl_wide!(
 /// triangle over 128 px a side, an edge reaching far off the screen, a
 /// line clipped to the screen), once or twice per edge, where a few
 /// hundred instructions more are small beside the pixels they light.
+#[inline(never)]
 fn floor_div_rem_by_shifts(n: i64, d: i64) -> (i64, i64) {
     let (m, dd) = (n.unsigned_abs(), d.unsigned_abs());
-    let (q, r) = match (u32::try_from(m), u32::try_from(dd).ok().and_then(NonZeroU32::new)) {
+    let (q, r) = match (
+        u32::try_from(m),
+        u32::try_from(dd).ok().and_then(NonZeroU32::new),
+    ) {
         (Ok(m), Some(dd)) => (u64::from(m / dd), u64::from(m % dd)),
         _ => {
             // Align the divisor's top bit with the dividend's (when m >=
@@ -124,7 +131,10 @@ fn floor_div_rem_by_shifts(n: i64, d: i64) -> (i64, i64) {
     // d - r. Both fit i64: q + [r > 0] <= 2^63, and r < d.
     let ceil = q + u64::from(n < 0 && r > 0);
     let (q, r) = match n < 0 {
-        true => (0i64.checked_sub_unsigned(ceil), if r > 0 { dd - r } else { 0 }),
+        true => (
+            0i64.checked_sub_unsigned(ceil),
+            if r > 0 { dd - r } else { 0 },
+        ),
         false => (i64::try_from(q).ok(), r),
     };
     (q.unwrap_or(i64::MIN), i64::try_from(r).unwrap_or(0))
@@ -235,7 +245,16 @@ mod tests {
                 "{n} / {d}"
             );
         };
-        let edges = [i64::MIN, i64::MIN + 1, -(1 << 32), -1, 0, 1, 1 << 32, i64::MAX];
+        let edges = [
+            i64::MIN,
+            i64::MIN + 1,
+            -(1 << 32),
+            -1,
+            0,
+            1,
+            1 << 32,
+            i64::MAX,
+        ];
         for &n in &edges {
             for d in [1, 2, 3, (1 << 32) - 1, 1 << 32, (1 << 32) + 1, i64::MAX] {
                 check(n, d);
