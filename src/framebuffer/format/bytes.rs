@@ -231,31 +231,39 @@ fn fill_overlapping<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     let pattern: [u8; 16] = core::array::from_fn(|i| pixel[i % B]);
     let n = bytes.len();
     // Each block starts a whole number of pixels into the span (B divides
-    // 8, and `n` is whole pixels): the pattern lines up.
-    let mut pair = |k: usize| {
-        if let Some(head) = bytes.get_mut(..k) {
-            head.copy_from_slice(&pattern[..k]);
-        }
-        if let Some(tail) = n.checked_sub(k).and_then(|at| bytes.get_mut(at..)) {
-            tail.copy_from_slice(&pattern[..k]);
-        }
-    };
+    // 8, and `n` is whole pixels): the pattern lines up. Blocks are whole
+    // arrays, one 16-byte store each on x86-64 (a block copied from a
+    // slice went as two 8-byte stores).
     if n >= 16 {
-        let mut blocks = bytes.chunks_exact_mut(16);
-        for block in &mut blocks {
-            block.copy_from_slice(&pattern);
-        }
-        if !blocks.into_remainder().is_empty() {
+        let (blocks, rest) = bytes.as_chunks_mut::<16>();
+        blocks.fill(pattern);
+        if !rest.is_empty() {
             if let Some(last) = bytes.get_mut(n - 16..) {
                 last.copy_from_slice(&pattern);
             }
         }
     } else if n >= 8 {
-        pair(8);
+        overlapping_pair(bytes, &pattern[..8]);
     } else if n >= 4 && 4 % B == 0 {
-        pair(4);
+        overlapping_pair(bytes, &pattern[..4]);
     } else {
         bytes.as_chunks_mut::<B>().0.fill(pixel);
+    }
+}
+
+/// Writes `block` at the start and at the end of `bytes` (`k <=
+/// bytes.len() <= 2 k` for a block of `k` bytes: together they cover it).
+#[inline(always)]
+fn overlapping_pair(bytes: &mut [u8], block: &[u8]) {
+    let n = bytes.len();
+    if let Some(head) = bytes.get_mut(..block.len()) {
+        head.copy_from_slice(block);
+    }
+    if let Some(tail) = n
+        .checked_sub(block.len())
+        .and_then(|at| bytes.get_mut(at..))
+    {
+        tail.copy_from_slice(block);
     }
 }
 
