@@ -103,7 +103,7 @@ impl<T: Narrow> Edge<T> {
             return None;
         }
         let one = T::narrow(ONE.into())?;
-        let wide = |v: T| T::Double::from(v);
+        let wide = |v: T| T::Product::from(v);
         let (e0, n) = (start * one - top.1, first - start);
         // q and r only when the edge is stepped or started below its top:
         // an edge of one row costs one division.

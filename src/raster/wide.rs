@@ -149,16 +149,23 @@ impl_wide!(i128, |a: i32, b: i32, _| Some(
 pub(crate) trait Narrow: Wide {
     /// The double width.
     type Double: Wide + From<Self>;
+    /// The width of an edge setup's products ([`Edge::new`]): `i64` for
+    /// both, which the edge's bounds keep them within (below `2^49` for
+    /// `i32` coordinates, `2^55` for `i64` ones), so that no 128-bit
+    /// product is ever taken there.
+    ///
+    /// [`Edge::new`]: super::edge::Edge::new
+    type Product: Wide + From<Self>;
 
-    /// `floor(n / d)` and the remainder in `0..d`, for `d > 0` and `n` of
-    /// double width: in `i32` when `n` fits (one hardware division on a
-    /// 32-bit core), else in `i64`; never in 128 bits, so `n` must fit
+    /// `floor(n / d)` and the remainder in `0..d`, for `d > 0`: in `i32`
+    /// when `n` fits (one hardware division on a 32-bit core), else in
     /// `i64`. `None` if `d <= 0` or a value does not fit.
-    fn div_rem_wide(n: Self::Double, d: Self) -> Option<(Self, Self)>;
+    fn div_rem_wide(n: Self::Product, d: Self) -> Option<(Self, Self)>;
 }
 
 impl Narrow for i32 {
     type Double = i64;
+    type Product = i64;
 
     #[inline]
     fn div_rem_wide(n: i64, d: i32) -> Option<(i32, i32)> {
@@ -174,10 +181,11 @@ impl Narrow for i32 {
 
 impl Narrow for i64 {
     type Double = i128;
+    type Product = i64;
 
     #[inline]
-    fn div_rem_wide(n: i128, d: i64) -> Option<(i64, i64)> {
-        i64::try_from(n).ok()?.div_rem_floor(d)
+    fn div_rem_wide(n: i64, d: i64) -> Option<(i64, i64)> {
+        n.div_rem_floor(d)
     }
 }
 
@@ -227,9 +235,8 @@ mod tests {
             Some((-(1 << 20) - 1, (1 << 20) - 1))
         );
         assert_eq!(i64::div_rem_wide(5, 0), None);
-        assert_eq!(i64::div_rem_wide(1i128 << 64, 3), None);
         assert_eq!(
-            i64::div_rem_wide(-(1i128 << 62), 3),
+            i64::div_rem_wide(-(1i64 << 62), 3),
             Some((-(1i64 << 62) / 3 - 1, 2))
         );
     }
