@@ -96,10 +96,15 @@ impl_wide!(
 ///
 /// The library routine a 64-bit division links there takes about 1 KB of
 /// flash (864 + 136 bytes on a Cortex-M4 at opt-level "s"); this takes
-/// about a tenth. Only shapes off the 32-bit path divide in 64 bits (a
-/// triangle over 128 px a side, an edge reaching far off the screen, a
-/// line clipped to the screen), once or twice per edge, where a few
-/// hundred instructions more are small beside the pixels they light.
+/// 364. Only shapes off the 32-bit path divide in 64 bits (a triangle
+/// over 128 px a side, an edge reaching far off the screen, a line
+/// clipped to the screen), once or twice per edge, where the quotient's
+/// bits (about 14 instructions each) are small beside the pixels they
+/// light: on the Cortex-M4, a line with ends 10^6 px off the screen
+/// costs 13 % more than with the library routine, the 64-bit triangle
+/// `HUGE` under 1 % more. Long division in 16-bit digits on the hardware
+/// divider (Knuth's algorithm D) matched the library's speed and took 768
+/// bytes.
 #[inline(never)]
 fn floor_div_rem_by_shifts(n: i64, d: i64) -> (i64, i64) {
     let (m, dd) = (n.unsigned_abs(), d.unsigned_abs());
