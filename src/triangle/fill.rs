@@ -207,19 +207,29 @@ fn relative<T: Wide>(frame: &Frame, v: &[Vertex; 3]) -> Option<[(T, T); 3]> {
 /// six orders of its corners, 256 against 271 on average (a one-off
 /// probe of the same setup).
 fn sort_by_y(v: &mut [Vertex; 3]) {
-    if cfg!(target_arch = "arm") {
-        let y = |v: &Vertex| v.raw().1;
+    match cfg!(target_arch = "arm") {
+        true => sort_by_y_branching(v),
+        false => sort_by_y_selecting(v),
+    }
+}
+
+/// [`sort_by_y`] with branches: insertion of the second and the third
+/// vertex. Stable, as the selecting network is: the same exchanges.
+fn sort_by_y_branching(v: &mut [Vertex; 3]) {
+    let y = |v: &Vertex| v.raw().1;
+    if y(&v[1]) < y(&v[0]) {
+        v.swap(0, 1);
+    }
+    if y(&v[2]) < y(&v[1]) {
+        v.swap(1, 2);
         if y(&v[1]) < y(&v[0]) {
             v.swap(0, 1);
         }
-        if y(&v[2]) < y(&v[1]) {
-            v.swap(1, 2);
-            if y(&v[1]) < y(&v[0]) {
-                v.swap(0, 1);
-            }
-        }
-        return;
     }
+}
+
+/// [`sort_by_y`] as three compare-exchanges written as selects.
+fn sort_by_y_selecting(v: &mut [Vertex; 3]) {
     let exchange = |a: Vertex, b: Vertex| {
         let swap = b.raw().1 < a.raw().1;
         (if swap { b } else { a }, if swap { a } else { b })
@@ -323,4 +333,42 @@ fn rows<T: Narrow, E>(
     }
     (*left, *right) = (l, r);
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Both sorts, whichever the target uses, against the standard stable
+    /// sort: every order of three corners, with and without equal `y`.
+    #[test]
+    fn both_sorts_are_the_stable_sort_by_y() {
+        let corner = |x: i32, y: i32| Vertex::from_raw(x, y);
+        let sets = [
+            [corner(0, 5), corner(1, -3), corner(2, 9)],
+            [corner(0, 4), corner(1, 4), corner(2, -1)],
+            [corner(0, 7), corner(1, 7), corner(2, 7)],
+            [corner(0, i32::MIN), corner(1, i32::MAX), corner(2, 0)],
+        ];
+        let orders = [
+            [0, 1, 2],
+            [0, 2, 1],
+            [1, 0, 2],
+            [1, 2, 0],
+            [2, 0, 1],
+            [2, 1, 0],
+        ];
+        for set in sets {
+            for order in orders {
+                let v = order.map(|i| set[i]);
+                let mut want = v;
+                want.sort_by_key(|c| c.raw().1);
+                for sort in [sort_by_y_branching, sort_by_y_selecting] {
+                    let mut got = v;
+                    sort(&mut got);
+                    assert_eq!(got, want, "{order:?}");
+                }
+            }
+        }
+    }
 }
