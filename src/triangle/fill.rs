@@ -19,8 +19,9 @@
 //! the clip, takes a shorter setup: its frame is found from those centres
 //! alone ([`Frame::of_small_triangle`]), its relative coordinates need no
 //! check, and every product fits `i32`, so its edges are set up unchecked
-//! ([`Edge::new_small`]). Otherwise everything runs in `i64` (products in
-//! `i128`), exact over the whole 20.12 range. A triangle outside the clip
+//! ([`Edge::new_small`]). Otherwise everything runs in `i64` (the edges'
+//! setup products in `i64` too, which their bounds keep below 2^55; the
+//! orientation's in `i128`), exact over the whole 20.12 range. A triangle outside the clip
 //! costs its bounding-box tests (the small frame's, then the checked
 //! one's), and nothing is set up.
 
