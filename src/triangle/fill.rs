@@ -204,14 +204,14 @@ fn relative<T: Wide>(frame: &Frame, v: &[Vertex; 3]) -> Option<[(T, T); 3]> {
 /// branches: a Cortex-M predicts nothing and pays a taken branch a few
 /// cycles, while each select is an `it` and a move, executed whatever the
 /// order. On a Cortex-M4, a 16 px triangle's setup went from 314
-/// instructions to 291 (`.ci/icount`, corners already in order; over all
-/// six orders of its corners, 256 against 271 on average in a one-off
-/// probe), the whole triangle only from 1,808 to 1,802.
+/// instructions to 303 (`.ci/icount`, corners already in order), the
+/// whole triangle only from 1,808 to 1,806; over all six orders of its
+/// corners, 256 against 271 on average in a one-off probe.
 ///
 /// Inlined on hosts: called out of line, the sorted array went back
 /// through memory, and random 4 px and 16 px triangles took 10 % and 6 %
-/// longer. Out of line on ARM, where two copies would cost flash and the
-/// counts are the same.
+/// longer. Out of line on ARM: inlined there, setup is 291 and the whole
+/// 16 px triangle 1,802, for 68 more bytes of flash at opt-level "s".
 #[cfg_attr(not(target_arch = "arm"), inline(always))]
 fn sort_by_y(v: &mut [Vertex; 3]) {
     match cfg!(target_arch = "arm") {
