@@ -30,21 +30,15 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Through
 use embedded_graphics::{
     pixelcolor::{Rgb565, RgbColor},
     prelude::*,
-    primitives::{PrimitiveStyle, Rectangle, Triangle as EgTriangle},
+    primitives::{PrimitiveStyle, Triangle as EgTriangle},
 };
-use embedded_raster::{
-    framebuffer::{buffer_size, Rgb565Le},
-    Framebuffer, Span, SpanDrawable, Triangle, TriangleAlgorithm, Vertex,
-};
+use embedded_raster::{SpanDrawable, Triangle, TriangleAlgorithm};
 
-#[path = "../tests/common/rng.rs"]
-mod rng;
-use rng::Rng;
-use tiny_skia::{FillRule, Paint, PathBuilder, Pixmap, Transform};
+use tiny_skia::{FillRule, Pixmap, Transform};
 
-const W: usize = 320;
-const H: usize = 240;
-type Fb = Framebuffer<Rgb565Le, W, H, { buffer_size::<Rgb565Le>(W, H) }>;
+#[path = "common/pools.rs"]
+mod pools;
+use pools::{fill_u16, raw_triangle, screen, skia_paths, spans_of, Fb, H, POOLS, W};
 
 /// A scene: triangles as pixel-centre corners (this crate and tiny-skia
 /// place them at `p + 1/2`; embedded-graphics takes the pixels).
@@ -111,46 +105,6 @@ fn mesh() -> Scene {
 
 fn ours(t: &[Point; 3]) -> Triangle {
     Triangle::from_points(t[0], t[1], t[2]).unwrap()
-}
-
-/// The screen.
-fn screen() -> Rectangle {
-    Rectangle::new(Point::zero(), Size::new(W as u32, H as u32))
-}
-
-/// The exact spans of `tris` on the screen, and their pixel count.
-fn spans_of(tris: &[Triangle]) -> (Vec<Span>, u64) {
-    let mut spans: Vec<Span> = vec![];
-    for t in tris {
-        t.for_each_span(&screen(), |s| {
-            spans.push(s);
-            Ok::<(), ()>(())
-        })
-        .unwrap();
-    }
-    let pixels = spans.iter().map(|s| u64::from(s.len())).sum();
-    (spans, pixels)
-}
-
-/// tiny-skia paths of triangles given in pixels, and a solid red paint
-/// without anti-aliasing.
-fn skia_paths(
-    tris: impl Iterator<Item = [(f32, f32); 3]>,
-) -> (Vec<tiny_skia::Path>, Paint<'static>) {
-    let paths = tris
-        .map(|t| {
-            let mut pb = PathBuilder::new();
-            pb.move_to(t[0].0, t[0].1);
-            pb.line_to(t[1].0, t[1].1);
-            pb.line_to(t[2].0, t[2].1);
-            pb.close();
-            pb.finish().unwrap()
-        })
-        .collect();
-    let mut paint = Paint::default();
-    paint.set_color_rgba8(255, 0, 0, 255);
-    paint.anti_alias = false;
-    (paths, paint)
 }
 
 fn bench_scene(c: &mut Criterion, scene: &Scene) {
@@ -220,72 +174,6 @@ fn triangles(c: &mut Criterion) {
     ] {
         bench_scene(c, &scene);
     }
-}
-
-/// A raw 20.12 coordinate from pixels, at 1/4096 px.
-fn raw(px: f64) -> i32 {
-    (px * 4096.0).round() as i32
-}
-
-/// `count` fat triangles `size` px across: corners on a circle of diameter
-/// `size` around a random centre, 120 degrees apart give or take 30, at
-/// fractional positions. With `margin`, centres keep the whole triangle on
-/// screen; without, they may lie anywhere on it (partly clipped).
-fn fat_pool(seed: u64, count: usize, size: f64, on_screen: bool) -> Vec<[(i32, i32); 3]> {
-    let mut rng = Rng(seed);
-    let r = size / 2.0;
-    let margin = if on_screen { r + 1.0 } else { 0.0 };
-    (0..count)
-        .map(|_| {
-            let cx = margin + rng.unit() * (W as f64 - 2.0 * margin);
-            let cy = margin + rng.unit() * (H as f64 - 2.0 * margin);
-            let a0 = rng.unit() * std::f64::consts::TAU;
-            [0.0, 1.0, 2.0].map(|k: f64| {
-                let a = a0 + k * std::f64::consts::TAU / 3.0 + (rng.unit() - 0.5) * 1.0;
-                (raw(cx + r * a.cos()), raw(cy + r * a.sin()))
-            })
-        })
-        .collect()
-}
-
-/// A 32 x 24 grid of 10 x 10 px cells over the screen, two triangles a
-/// cell, inner grid points jittered by up to 3 px at 1/4096 px: a mesh
-/// that covers every pixel once.
-fn mesh_pool(seed: u64) -> Vec<[(i32, i32); 3]> {
-    let mut rng = Rng(seed);
-    let (nx, ny) = (32usize, 24usize);
-    let mut grid = vec![(0i32, 0i32); (nx + 1) * (ny + 1)];
-    for j in 0..=ny {
-        for i in 0..=nx {
-            let inner = i > 0 && i < nx && j > 0 && j < ny;
-            let jitter = |rng: &mut Rng| if inner { (rng.unit() - 0.5) * 6.0 } else { 0.0 };
-            let x = i as f64 * 10.0 + jitter(&mut rng);
-            let y = j as f64 * 10.0 + jitter(&mut rng);
-            grid[j * (nx + 1) + i] = (raw(x), raw(y));
-        }
-    }
-    let at = |i: usize, j: usize| grid[j * (nx + 1) + i];
-    let mut tris = vec![];
-    for j in 0..ny {
-        for i in 0..nx {
-            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-            tris.push([a, b, c]);
-            tris.push([a, c, d]);
-        }
-    }
-    tris
-}
-
-fn raw_triangle(t: &[(i32, i32); 3]) -> Triangle {
-    let v = t.map(|(x, y)| Vertex::from_raw(x, y));
-    Triangle::new(v[0], v[1], v[2])
-}
-
-/// Fills `span` of a plain row-major `[u16]` frame.
-#[inline(always)]
-fn fill_u16(frame: &mut [u16], s: Span, color: u16) {
-    let row = s.y as usize * W;
-    frame[row + s.x_start as usize..row + s.x_end as usize].fill(color);
 }
 
 fn bench_pool(c: &mut Criterion, name: &str, pool: &[[(i32, i32); 3]]) {
@@ -378,11 +266,9 @@ fn bench_pool(c: &mut Criterion, name: &str, pool: &[[(i32, i32); 3]]) {
 }
 
 fn pools(c: &mut Criterion) {
-    bench_pool(c, "pool tiny 4 px", &fat_pool(1, 512, 4.0, true));
-    bench_pool(c, "pool small 16 px", &fat_pool(2, 256, 16.0, true));
-    bench_pool(c, "pool medium 64 px", &fat_pool(3, 64, 64.0, true));
-    bench_pool(c, "pool large 240 px", &fat_pool(4, 16, 240.0, false));
-    bench_pool(c, "pool mesh 32x24 of 10 px", &mesh_pool(5));
+    for (name, pool) in POOLS {
+        bench_pool(c, &format!("pool {name}"), &pool());
+    }
 }
 
 criterion_group!(benches, triangles, pools);
