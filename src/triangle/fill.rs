@@ -244,15 +244,13 @@ fn walk_tiny<E>(
     let mut row = 0;
     loop {
         let (ts, tl) = (short.threshold(), long.threshold());
-        let x0 = ts.min(tl).max(0);
-        let x1 = ts.max(tl).min(frame.width);
-        if x0 < x1 {
-            emit(Span {
-                y: frame.origin.y + row,
-                x_start: frame.origin.x + x0,
-                x_end: frame.origin.x + x1,
-            })?;
-        }
+        emit_columns(
+            frame,
+            row,
+            ts.min(tl).max(0),
+            ts.max(tl).min(frame.width),
+            emit,
+        )?;
         if row == end {
             return Ok(());
         }
@@ -378,6 +376,27 @@ fn walk<T: Narrow, E>(
     Ok(())
 }
 
+/// Emits columns `x0..x1` (relative to `frame`, within `0..=width`) of
+/// the frame's row `row`, if there are any.
+#[inline(always)]
+fn emit_columns<E>(
+    frame: &Frame,
+    row: i32,
+    x0: i32,
+    x1: i32,
+    emit: &mut impl FnMut(Span) -> Result<(), E>,
+) -> Result<(), E> {
+    if x0 < x1 {
+        // Inside the frame, which lies inside the clip: no overflow.
+        emit(Span {
+            y: frame.origin.y + row,
+            x_start: frame.origin.x + x0,
+            x_end: frame.origin.x + x1,
+        })?;
+    }
+    Ok(())
+}
+
 /// Emits rows `from..=end` between `left` and `right`, both positioned on
 /// row `from`; leaves both on `end` (never steps past it, so values stay
 /// within the edges' bounds). One copy per width: the side is data here,
@@ -409,12 +428,7 @@ fn rows<T: Narrow, E>(
         let x1 = r.threshold().min(width);
         if x0 < x1 {
             if let (Some(x0), Some(x1)) = (x0.to_i32(), x1.to_i32()) {
-                // Inside the frame, which lies inside the clip: no overflow.
-                emit(Span {
-                    y: frame.origin.y + row,
-                    x_start: frame.origin.x + x0,
-                    x_end: frame.origin.x + x1,
-                })?;
+                emit_columns(frame, row, x0, x1, emit)?;
             }
         }
         if row == end {
