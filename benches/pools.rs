@@ -14,8 +14,9 @@
 //! rounds put every contender under the same conditions, and the fastest
 //! batch is the one least disturbed.
 //!
-//! `cargo bench --bench pools`; `... | python3 benches/splice.py pools`
-//! puts the table into BENCHMARKS.md and the README.
+//! `cargo bench --bench pools` prints one run's table;
+//! `python3 benches/pools_median.py | python3 benches/splice.py pools`
+//! puts the median of 9 runs into BENCHMARKS.md and the README.
 
 use std::{hint::black_box, time::Instant};
 

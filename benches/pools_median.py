@@ -8,14 +8,14 @@ Each run is a new process: where its buffers land in memory moves the
 memory limit itself by up to a third between runs (242 to 374 ns a
 triangle on the medium pool), which no number of rounds inside one run
 removes. Each cell of the printed table is the median of that cell over
-RUNS runs (default 5); the last column gives the range of `draw_spans`
+RUNS runs (default 9); the last column gives the range of `draw_spans`
 over the runs.
 """
 import statistics
 import subprocess
 import sys
 
-runs = int(sys.argv[1]) if len(sys.argv) > 1 else 5
+runs = int(sys.argv[1]) if len(sys.argv) > 1 else 9
 tables = []
 for _ in range(runs):
     out = subprocess.run(
