@@ -219,8 +219,9 @@ fn narrow_edges(small: bool) -> impl Fn((i32, i32), (i32, i32)) -> Option<Edge<i
 /// spans are empty). The lower short edge takes over from the upper one
 /// inside the loop. For a triangle of a few rows this saves the
 /// orientation and the two calls into [`rows`] with their edges passed
-/// through memory: random 4 px triangles take about 12 % less time on
-/// x86-64. Taller ones keep [`walk`], whose out-of-line row loop has
+/// through memory: random 4 px triangles take about 10 % less time on
+/// x86-64 (the tiny pool of `benches/pools.rs`, median of 5 runs: 46 ns
+/// a triangle through [`walk`], 41 through this). Taller ones keep [`walk`], whose out-of-line row loop has
 /// registers to spare (this loop, holding a third vertex pair for the
 /// lower edge, was up to 18 % slower on 64 px triangles), and so does
 /// 32-bit ARM, where it cost more instructions than it saved.
@@ -286,9 +287,10 @@ fn relative<T: Wide>(frame: &Frame, v: &[Vertex; 3]) -> Option<[(T, T); 3]> {
 /// branches: a Cortex-M predicts nothing and pays a taken branch a few
 /// cycles, while each select is an `it` and a move, executed whatever the
 /// order. On a Cortex-M4, a 16 px triangle's setup went from 314
-/// instructions to 303 (`.ci/icount`, corners already in order), the
-/// whole triangle only from 1,808 to 1,806; over all six orders of its
-/// corners, 256 against 271 on average in a one-off probe.
+/// instructions to 303 (`.ci/icount` when it was measured, corners
+/// already in order), the whole triangle only from 1,808 to 1,806; over
+/// all six orders of its corners, 256 against 271 on average in a
+/// one-off probe.
 ///
 /// Inlined on hosts: called out of line, the sorted array went back
 /// through memory, and random 4 px and 16 px triangles took 10 % and 6 %
