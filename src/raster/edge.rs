@@ -31,7 +31,8 @@
 //! wrap = s < r;   x += q + wrap;   s += (wrap ? dy : 0) - r
 //! ```
 //!
-//! one compare and two adds per row, exact.
+//! one compare and two adds per row, exact. The edge stores `x + 4095`
+//! rather than `x`, so that the row's threshold is one shift.
 //!
 //! # Widths
 //!
@@ -53,7 +54,7 @@ const SHIFT: u32 = 12;
 /// raw units below `2^29` in magnitude for `i32`, so no overflow).
 #[inline(always)]
 fn first_row_at_or_below<T: Wide>(y: T) -> T {
-    (y + T::narrow(i64::from(ONE - 1)).unwrap_or(T::ZERO)) >> SHIFT
+    (y + bias()) >> SHIFT
 }
 
 /// An edge's crossing of consecutive rows, stepped exactly in `T`.
@@ -63,9 +64,11 @@ pub(crate) struct Edge<T> {
     /// the row it was started on).
     pub first_row: i32,
     pub last_row: i32,
-    /// `ceil(x(y))` on the current row.
-    x: T,
-    /// `x dy` minus the exact numerator, in `0..dy`.
+    /// `ceil(x(y)) + 4095` on the current row: the crossing rounded up
+    /// to a raw unit and biased so that the threshold column is this
+    /// shifted right by 12 (one shift a row, not an add and a shift).
+    biased: T,
+    /// `ceil(x(y)) dy` minus the exact numerator, in `0..dy`.
     s: T,
     /// `4096 dx = q dy + r`.
     q: T,
@@ -119,7 +122,7 @@ impl<T: Narrow> Edge<T> {
             first_row: first.to_i32()?,
             last_row: last.to_i32()?,
             // n q + c is the crossing's move from x0 within the edge.
-            x: top.0 + n * q - f,
+            biased: top.0 + n * q - f + bias(),
             s,
             q,
             r,
@@ -160,7 +163,7 @@ impl Edge<i32> {
         Some(Self {
             first_row: first,
             last_row: last,
-            x: top.0 - f,
+            biased: top.0 - f + (ONE - 1),
             s,
             q,
             r,
@@ -177,14 +180,14 @@ impl<T: Wide> Edge<T> {
     /// row compare by it.
     #[inline(always)]
     pub(crate) fn crossing(&self) -> T {
-        self.x
+        self.biased - bias()
     }
 
     /// The threshold column on the current row: columns from it on lie
     /// right of the edge.
     #[inline(always)]
     pub(crate) fn threshold(&self) -> T {
-        threshold_of(self.x)
+        self.biased >> SHIFT
     }
 
     /// Moves to the next row. Written as selects, not branches: whether
@@ -193,17 +196,16 @@ impl<T: Wide> Edge<T> {
     #[inline(always)]
     pub(crate) fn step(&mut self) {
         let wrap = self.s < self.r;
-        self.x = self.x + self.q + if wrap { T::ONE } else { T::ZERO };
+        self.biased = self.biased + self.q + if wrap { T::ONE } else { T::ZERO };
         self.s = self.s - self.r + if wrap { self.dy } else { T::ZERO };
     }
 }
 
-/// The column threshold of a crossing `x` (raw units): `ceil(x / 4096)`.
+/// 4095 in `T`, the bias of [`Edge`]'s crossing: `ceil(x / 4096) = (x +
+/// 4095) >> 12`.
 #[inline(always)]
-pub(crate) fn threshold_of<T: Wide>(x: T) -> T {
-    // A crossing lies on its edge: below the coordinate bound, so adding
-    // 4095 does not overflow.
-    first_row_at_or_below(x)
+fn bias<T: Wide>() -> T {
+    T::narrow(i64::from(ONE - 1)).unwrap_or(T::ZERO)
 }
 
 #[cfg(test)]
