@@ -408,7 +408,7 @@ fn emit_columns<E>(
 /// the sink. Left to the compiler, it was inlined into the one-shot walk
 /// once the band walk also called it, and the flat-triangle rows of
 /// `.ci/icount` took 8 % more instructions on a Cortex-M4 (240 px: 1.54
-/// instructions a pixel against 1.49 now).
+/// instructions a pixel against 1.49 then).
 #[inline(never)]
 fn rows<T: Narrow, E>(
     frame: &Frame,
