@@ -18,22 +18,11 @@
 //! `python3 benches/pools_median.py | python3 benches/splice.py pools`
 //! puts the median of 9 runs into BENCHMARKS.md and the README.
 
-use std::{hint::black_box, time::Instant};
-
-use embedded_graphics::{
-    pixelcolor::{Rgb565, RgbColor},
-    prelude::*,
-    primitives::{PrimitiveStyle, Triangle as EgTriangle},
-};
-use embedded_raster::{SpanDrawable, Triangle, TriangleAlgorithm};
-use tiny_skia::{FillRule, Pixmap, Transform};
+use std::time::Instant;
 
 #[path = "common/pools.rs"]
 mod pools;
-use pools::{fill_u16, raw_triangle, screen, skia_paths, spans_of, Fb, H, POOLS, W};
-
-/// A contender: its name and one pass over the pool.
-type Contender<'a> = (&'static str, Box<dyn FnMut() + 'a>);
+use pools::{contenders, Prepared, Targets, POOLS};
 
 /// An environment variable as a number, or `default`.
 fn setting(name: &str, default: u64) -> u64 {
@@ -75,99 +64,9 @@ fn main() {
     );
     println!("|---|---|---|---|---|---|---|---|---|---|");
     for (name, pool) in POOLS {
-        let pool = pool();
-        let tris: Vec<Triangle> = pool.iter().map(raw_triangle).collect();
-        let (spans, pixels) = spans_of(&tris);
-        let clip = screen();
-        let px = |(x, y): (i32, i32)| (x as f32 / 4096.0, y as f32 / 4096.0);
-        let (paths, paint) = skia_paths(pool.iter().map(|t| t.map(px)));
-        let eg: Vec<_> = pool
-            .iter()
-            .map(|t| {
-                let p = t.map(|(x, y)| Point::new((x + 2048) >> 12, (y + 2048) >> 12));
-                EgTriangle::new(p[0], p[1], p[2])
-                    .into_styled(PrimitiveStyle::with_fill(Rgb565::GREEN))
-            })
-            .collect();
-        // Each contender draws on a target of its own.
-        let (mut frame, mut frame2) = (vec![0u16; W * H], vec![0u16; W * H]);
-        let mut fbs: Vec<Box<Fb>> = (0..4).map(|_| Box::new(Fb::new())).collect();
-        let [fb_draw, fb_spans, fb_walk, fb_eg] = &mut fbs[..] else {
-            unreachable!()
-        };
-        let mut pixmap = Pixmap::new(W as u32, H as u32).unwrap();
-        let mut contenders: Vec<Contender<'_>> = vec![
-            (
-                "limit",
-                Box::new(|| {
-                    for &s in &spans {
-                        fill_u16(&mut frame, s, 0xF800);
-                    }
-                    black_box(&frame);
-                }),
-            ),
-            (
-                "draw",
-                Box::new(|| {
-                    for t in &tris {
-                        t.fill(Rgb565::RED).draw(&mut **fb_draw).unwrap();
-                    }
-                    black_box(&fb_draw);
-                }),
-            ),
-            (
-                "draw_spans",
-                Box::new(|| {
-                    for t in &tris {
-                        t.fill(Rgb565::RED).draw_spans(&mut **fb_spans).unwrap();
-                    }
-                    black_box(&fb_spans);
-                }),
-            ),
-            (
-                "for_each_span",
-                Box::new(|| {
-                    for t in &tris {
-                        t.for_each_span(&clip, |s| {
-                            fill_u16(&mut frame2, s, 0xF800);
-                            Ok::<(), ()>(())
-                        })
-                        .unwrap();
-                    }
-                    black_box(&frame2);
-                }),
-            ),
-            (
-                "EdgeWalk@12",
-                Box::new(|| {
-                    for t in &tris {
-                        t.fill(Rgb565::RED)
-                            .algorithm(TriangleAlgorithm::EdgeWalk)
-                            .draw_spans(&mut **fb_walk)
-                            .unwrap();
-                    }
-                    black_box(&fb_walk);
-                }),
-            ),
-            (
-                "tiny-skia",
-                Box::new(|| {
-                    for p in &paths {
-                        pixmap.fill_path(p, &paint, FillRule::Winding, Transform::identity(), None);
-                    }
-                    black_box(&pixmap);
-                }),
-            ),
-            (
-                "embedded-graphics",
-                Box::new(|| {
-                    for t in &eg {
-                        t.draw(&mut **fb_eg).unwrap();
-                    }
-                    black_box(&fb_eg);
-                }),
-            ),
-        ];
+        let pool = Prepared::new(&pool());
+        let mut targets = Targets::new();
+        let mut contenders = contenders(&pool, &mut targets);
         // Passes per batch, from one warm pass each.
         let passes: Vec<u64> = contenders
             .iter_mut()
@@ -189,9 +88,9 @@ fn main() {
             .collect();
         println!(
             "| {name} | {} | {} | {} | {} |",
-            tris.len(),
-            group_thousands((pixels as f64 / tris.len() as f64).round() as u64),
-            group_thousands((limit * 1e9 / tris.len() as f64).round() as u64),
+            pool.tris.len(),
+            group_thousands((pool.pixels as f64 / pool.tris.len() as f64).round() as u64),
+            group_thousands((limit * 1e9 / pool.tris.len() as f64).round() as u64),
             ratios.join(" | ")
         );
     }

@@ -32,13 +32,13 @@ use embedded_graphics::{
     prelude::*,
     primitives::{PrimitiveStyle, Triangle as EgTriangle},
 };
-use embedded_raster::{SpanDrawable, Triangle, TriangleAlgorithm};
+use embedded_raster::Triangle;
 
 use tiny_skia::{FillRule, Pixmap, Transform};
 
 #[path = "common/pools.rs"]
 mod pools;
-use pools::{fill_u16, raw_triangle, screen, skia_paths, spans_of, Fb, H, POOLS, W};
+use pools::{contenders, skia_paths, spans_of, Fb, Prepared, Targets, H, POOLS, W};
 
 /// A scene: triangles as pixel-centre corners (this crate and tiny-skia
 /// place them at `p + 1/2`; embedded-graphics takes the pixels).
@@ -177,91 +177,15 @@ fn triangles(c: &mut Criterion) {
 }
 
 fn bench_pool(c: &mut Criterion, name: &str, pool: &[[(i32, i32); 3]]) {
-    let tris: Vec<Triangle> = pool.iter().map(raw_triangle).collect();
-    let (spans, pixels) = spans_of(&tris);
-    let clip = screen();
-    let n = tris.len();
-
+    let pool = Prepared::new(pool);
+    let mut targets = Targets::new();
     let mut g = c.benchmark_group(name);
-    g.throughput(Throughput::Elements(pixels));
-    let mut fb = Box::new(Fb::new());
-    let mut frame = vec![0u16; W * H];
-
-    g.bench_function(BenchmarkId::new("limit", n), |b| {
-        b.iter(|| {
-            for &s in &spans {
-                fill_u16(&mut frame, s, 0xF800);
-            }
-            black_box(&frame);
-        })
-    });
-    g.bench_function(BenchmarkId::new("draw", n), |b| {
-        b.iter(|| {
-            for t in &tris {
-                t.fill(Rgb565::RED).draw(&mut *fb).unwrap();
-            }
-            black_box(&fb);
-        })
-    });
-    g.bench_function(BenchmarkId::new("draw_spans", n), |b| {
-        b.iter(|| {
-            for t in &tris {
-                t.fill(Rgb565::RED).draw_spans(&mut *fb).unwrap();
-            }
-            black_box(&fb);
-        })
-    });
-    g.bench_function(BenchmarkId::new("for_each_span", n), |b| {
-        b.iter(|| {
-            for t in &tris {
-                t.for_each_span(&clip, |s| {
-                    fill_u16(&mut frame, s, 0xF800);
-                    Ok::<(), ()>(())
-                })
-                .unwrap();
-            }
-            black_box(&frame);
-        })
-    });
-    g.bench_function(BenchmarkId::new("EdgeWalk@12", n), |b| {
-        b.iter(|| {
-            for t in &tris {
-                t.fill(Rgb565::RED)
-                    .algorithm(TriangleAlgorithm::EdgeWalk)
-                    .draw_spans(&mut *fb)
-                    .unwrap();
-            }
-            black_box(&fb);
-        })
-    });
-
-    let mut pixmap = Pixmap::new(W as u32, H as u32).unwrap();
-    let px = |(x, y): (i32, i32)| (x as f32 / 4096.0, y as f32 / 4096.0);
-    let (paths, paint) = skia_paths(pool.iter().map(|t| t.map(px)));
-    g.bench_function(BenchmarkId::new("tiny-skia", n), |b| {
-        b.iter(|| {
-            for p in &paths {
-                pixmap.fill_path(p, &paint, FillRule::Winding, Transform::identity(), None);
-            }
-            black_box(&pixmap);
-        })
-    });
-
-    let eg: Vec<_> = pool
-        .iter()
-        .map(|t| {
-            let p = t.map(|(x, y)| Point::new((x + 2048) >> 12, (y + 2048) >> 12));
-            EgTriangle::new(p[0], p[1], p[2]).into_styled(PrimitiveStyle::with_fill(Rgb565::GREEN))
-        })
-        .collect();
-    g.bench_function(BenchmarkId::new("embedded-graphics", n), |b| {
-        b.iter(|| {
-            for t in &eg {
-                t.draw(&mut *fb).unwrap();
-            }
-            black_box(&fb);
-        })
-    });
+    g.throughput(Throughput::Elements(pool.pixels));
+    for (label, mut pass) in contenders(&pool, &mut targets) {
+        g.bench_function(BenchmarkId::new(label, pool.tris.len()), |b| {
+            b.iter(&mut pass)
+        });
+    }
     g.finish();
 }
 

@@ -1,17 +1,23 @@
-//! The inputs of the triangle benchmarks' random pools, shared by
+//! The triangle benchmarks' random pools and their contenders, shared by
 //! `benches/triangles.rs` (criterion) and `benches/pools.rs` (interleaved
 //! rounds): the pools themselves, the screen, the exact spans (the memory
-//! limit's work) and tiny-skia's paths.
+//! limit's work), tiny-skia's paths and one pass of each contender.
 
 // Each benchmark uses what it needs.
 #![allow(dead_code)]
 
-use embedded_graphics::{prelude::*, primitives::Rectangle};
+use std::hint::black_box;
+
+use embedded_graphics::{
+    pixelcolor::{Rgb565, RgbColor},
+    prelude::*,
+    primitives::{PrimitiveStyle, Rectangle, Styled, Triangle as EgTriangle},
+};
 use embedded_raster::{
     framebuffer::{buffer_size, Rgb565Le},
-    Framebuffer, Span, Triangle, Vertex,
+    Framebuffer, Span, SpanDrawable, Triangle, TriangleAlgorithm, Vertex,
 };
-use tiny_skia::{Paint, PathBuilder};
+use tiny_skia::{FillRule, Paint, PathBuilder, Pixmap, Transform};
 
 #[path = "../../tests/common/rng.rs"]
 mod rng;
@@ -142,4 +148,156 @@ pub fn raw_triangle(t: &[(i32, i32); 3]) -> Triangle {
 pub fn fill_u16(frame: &mut [u16], s: Span, color: u16) {
     let row = s.y as usize * W;
     frame[row + s.x_start as usize..row + s.x_end as usize].fill(color);
+}
+
+/// A contender: its name and one pass over a pool.
+pub type Contender<'a> = (&'static str, Box<dyn FnMut() + 'a>);
+
+/// A pool as each contender takes it.
+pub struct Prepared {
+    /// This crate's triangles.
+    pub tris: Vec<Triangle>,
+    /// Their exact spans (the limit's work) and the pixels they light.
+    pub spans: Vec<Span>,
+    pub pixels: u64,
+    paths: Vec<tiny_skia::Path>,
+    paint: Paint<'static>,
+    /// embedded-graphics' triangles, corners rounded to pixels.
+    eg: Vec<Styled<EgTriangle, PrimitiveStyle<Rgb565>>>,
+}
+
+impl Prepared {
+    pub fn new(pool: &[[(i32, i32); 3]]) -> Self {
+        let tris: Vec<Triangle> = pool.iter().map(raw_triangle).collect();
+        let (spans, pixels) = spans_of(&tris);
+        let px = |(x, y): (i32, i32)| (x as f32 / 4096.0, y as f32 / 4096.0);
+        let (paths, paint) = skia_paths(pool.iter().map(|t| t.map(px)));
+        let eg = pool
+            .iter()
+            .map(|t| {
+                let p = t.map(|(x, y)| Point::new((x + 2048) >> 12, (y + 2048) >> 12));
+                EgTriangle::new(p[0], p[1], p[2])
+                    .into_styled(PrimitiveStyle::with_fill(Rgb565::GREEN))
+            })
+            .collect();
+        Self {
+            tris,
+            spans,
+            pixels,
+            paths,
+            paint,
+            eg,
+        }
+    }
+}
+
+/// What the contenders draw on: each a target of its own.
+pub struct Targets {
+    frames: [Vec<u16>; 2],
+    fbs: [Box<Fb>; 4],
+    pixmap: Pixmap,
+}
+
+impl Targets {
+    pub fn new() -> Self {
+        Self {
+            frames: [vec![0u16; W * H], vec![0u16; W * H]],
+            fbs: [(); 4].map(|()| Box::new(Fb::new())),
+            pixmap: Pixmap::new(W as u32, H as u32).unwrap(),
+        }
+    }
+}
+
+/// The contenders on `pool`, the limit first: `slice::fill` of the exact
+/// spans on a `[u16]` frame; this crate's `draw` and `draw_spans` on its
+/// framebuffer; `for_each_span` filling the `[u16]` frame; `EdgeWalk` at
+/// 12 bits; tiny-skia's non-anti-aliased `fill_path`; embedded-graphics'
+/// filled `Triangle`.
+pub fn contenders<'a>(pool: &'a Prepared, targets: &'a mut Targets) -> Vec<Contender<'a>> {
+    let Targets {
+        frames: [frame, frame2],
+        fbs: [fb_draw, fb_spans, fb_walk, fb_eg],
+        pixmap,
+    } = targets;
+    let Prepared {
+        tris,
+        spans,
+        paths,
+        paint,
+        eg,
+        ..
+    } = pool;
+    let clip = screen();
+    vec![
+        (
+            "limit",
+            Box::new(move || {
+                for &s in spans {
+                    fill_u16(frame, s, 0xF800);
+                }
+                black_box(&frame);
+            }),
+        ),
+        (
+            "draw",
+            Box::new(move || {
+                for t in tris {
+                    t.fill(Rgb565::RED).draw(&mut **fb_draw).unwrap();
+                }
+                black_box(&fb_draw);
+            }),
+        ),
+        (
+            "draw_spans",
+            Box::new(move || {
+                for t in tris {
+                    t.fill(Rgb565::RED).draw_spans(&mut **fb_spans).unwrap();
+                }
+                black_box(&fb_spans);
+            }),
+        ),
+        (
+            "for_each_span",
+            Box::new(move || {
+                for t in tris {
+                    t.for_each_span(&clip, |s| {
+                        fill_u16(frame2, s, 0xF800);
+                        Ok::<(), ()>(())
+                    })
+                    .unwrap();
+                }
+                black_box(&frame2);
+            }),
+        ),
+        (
+            "EdgeWalk@12",
+            Box::new(move || {
+                for t in tris {
+                    t.fill(Rgb565::RED)
+                        .algorithm(TriangleAlgorithm::EdgeWalk)
+                        .draw_spans(&mut **fb_walk)
+                        .unwrap();
+                }
+                black_box(&fb_walk);
+            }),
+        ),
+        (
+            "tiny-skia",
+            Box::new(move || {
+                for p in paths {
+                    pixmap.fill_path(p, paint, FillRule::Winding, Transform::identity(), None);
+                }
+                black_box(&pixmap);
+            }),
+        ),
+        (
+            "embedded-graphics",
+            Box::new(move || {
+                for t in eg {
+                    t.draw(&mut **fb_eg).unwrap();
+                }
+                black_box(&fb_eg);
+            }),
+        ),
+    ]
 }
