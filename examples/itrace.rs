@@ -1,0 +1,68 @@
+//! Firmware for `.ci/itrace`: a few triangles drawn between two marker
+//! calls, for an instruction-by-instruction trace under QEMU. The script
+//! counts the instructions run between each `begin` and the next `end`,
+//! in all and per function: where a triangle's setup and rows go on a
+//! Cortex-M4, which the totals of `.ci/icount` do not show.
+//!
+//! The windows, in order (the triangles of `.ci/icount`'s "flat
+//! triangles" rows, `builtin_scene::irregular`):
+//! 1. the setup of a 16 px triangle: `for_each_span` stopped at its first
+//!    span, as `.ci/icount` measures it;
+//! 2. the same triangle drawn through the framebuffer's span sink;
+//! 3. a 64 px triangle, the same way.
+//!
+//! Built for the host, it does nothing.
+
+#![cfg_attr(target_arch = "arm", no_std, no_main)]
+
+#[cfg(target_arch = "arm")]
+#[path = "common/builtin_scene.rs"]
+#[allow(dead_code)]
+mod builtin_scene;
+
+#[cfg(target_arch = "arm")]
+#[path = "common/semihosting.rs"]
+mod semihosting;
+
+#[cfg(target_arch = "arm")]
+mod target {
+    use core::hint::black_box;
+
+    use cortex_m_rt::entry;
+    use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+    use embedded_raster::{Span, SpanDrawable};
+
+    use super::builtin_scene::{irregular, SceneBuffer, SCREEN};
+
+    /// The start of a traced window.
+    #[inline(never)]
+    fn begin() {
+        cortex_m::asm::nop();
+    }
+
+    /// Its end (a body of its own, so that the two are not merged).
+    #[inline(never)]
+    fn end() {
+        cortex_m::asm::nop();
+        cortex_m::asm::nop();
+    }
+
+    #[entry]
+    fn main() -> ! {
+        static mut FB: SceneBuffer = SceneBuffer::new();
+        let small = irregular(32, 48, 16);
+        begin();
+        let first = |_: Span| Err(());
+        let _ = black_box(black_box(&small).for_each_span(black_box(&SCREEN), first));
+        end();
+        for t in [small, irregular(64, 64, 64)] {
+            begin();
+            let Ok(()) = black_box(&t).fill(Rgb565::RED).draw_spans(black_box(&mut *FB));
+            end();
+        }
+        super::semihosting::exit_success()
+    }
+}
+
+#[cfg(not(target_arch = "arm"))]
+fn main() {}
