@@ -17,7 +17,6 @@
 
 #[cfg(target_arch = "arm")]
 #[path = "common/builtin_scene.rs"]
-#[allow(dead_code)]
 mod builtin_scene;
 
 #[cfg(target_arch = "arm")]
@@ -57,7 +56,9 @@ mod target {
         end();
         for t in [small, irregular(64, 64, 64)] {
             begin();
-            let Ok(()) = black_box(&t).fill(Rgb565::RED).draw_spans(black_box(&mut *FB));
+            let Ok(()) = black_box(&t)
+                .fill(Rgb565::RED)
+                .draw_spans(black_box(&mut *FB));
             end();
         }
         super::semihosting::exit_success()
