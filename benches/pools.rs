@@ -14,10 +14,6 @@
 //! rounds put every contender under the same conditions, and the fastest
 //! batch is the one least disturbed.
 //!
-//! `POOLS_ONLY=draw_spans,for_each_span` times only the limit and the
-//! contenders named (the others print `-`): for comparing two builds of
-//! one contender quickly, not for the published table.
-//!
 //! `cargo bench --bench pools` prints one run's table;
 //! `python3 benches/pools_median.py | python3 benches/splice.py pools`
 //! puts the median of 9 runs into BENCHMARKS.md and the README.
@@ -67,13 +63,6 @@ fn main() {
         "| pool | triangles | px each | limit ns/tri | draw | draw_spans | for_each_span | EdgeWalk@12 | tiny-skia | embedded-graphics |"
     );
     println!("|---|---|---|---|---|---|---|---|---|---|");
-    let only = std::env::var("POOLS_ONLY").ok();
-    let timed = |contender: &str| {
-        contender == "limit"
-            || only
-                .as_deref()
-                .is_none_or(|names| names.split(',').any(|n| n == contender))
-    };
     for (name, pool) in POOLS {
         let pool = Prepared::new(&pool());
         let mut targets = Targets::new();
@@ -81,10 +70,7 @@ fn main() {
         // Passes per batch, from one warm pass each.
         let passes: Vec<u64> = contenders
             .iter_mut()
-            .map(|(contender, pass)| {
-                if !timed(contender) {
-                    return 0;
-                }
+            .map(|(_, pass)| {
                 let once = time(1, pass.as_mut()).max(1e-7);
                 ((batch / once) as u64).max(1)
             })
@@ -92,19 +78,13 @@ fn main() {
         let mut best = vec![f64::MAX; contenders.len()];
         for _ in 0..rounds {
             for ((_, pass), (n, best)) in contenders.iter_mut().zip(passes.iter().zip(&mut best)) {
-                if *n == 0 {
-                    continue;
-                }
                 *best = best.min(time(*n, pass.as_mut()) / *n as f64);
             }
         }
         let limit = best[0];
         let ratios: Vec<String> = best[1..]
             .iter()
-            .map(|&t| match t {
-                f64::MAX => "-".to_string(),
-                t => format!("{:.2}", limit / t),
-            })
+            .map(|&t| format!("{:.2}", limit / t))
             .collect();
         println!(
             "| {name} | {} | {} | {} | {} |",
