@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""A/B of the random pools: the working tree against another revision.
+
+    python3 benches/pools_ab.py REV [RUNS]
+
+Builds `benches/pools.rs` twice, at REV (in a temporary git worktree, with
+a target directory of its own under target/) and from the working tree,
+then runs the two executables in turn, RUNS times each (default 5), every
+run the full interleaved bench with all its contenders. Prints, for each
+pool and contender, the median fraction of the limit before and after and
+their ratio.
+
+Why this way: the pools' ratios move with the machine over minutes, and
+with where a process's buffers land, so two builds are only compared in
+runs that alternate. And only the full bench counts: timed without the
+other contenders between its rounds, one change looked 10 % faster on the
+small pool and was 20 % slower in the full bench (BENCHMARKS.md, "Where a
+triangle's instructions go").
+"""
+import json
+import os
+import pathlib
+import statistics
+import subprocess
+import sys
+import tempfile
+
+root = pathlib.Path(__file__).resolve().parent.parent
+rev = sys.argv[1]
+runs = int(sys.argv[2]) if len(sys.argv) > 2 else 5
+
+
+def build(tree, target_dir):
+    """The pools bench executable built in `tree`."""
+    out = subprocess.run(
+        ["cargo", "bench", "--bench", "pools", "--no-run", "--message-format=json"],
+        cwd=tree,
+        env={**os.environ, "CARGO_TARGET_DIR": str(target_dir)},
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout
+    for line in out.splitlines():
+        msg = json.loads(line)
+        if msg.get("reason") == "compiler-artifact" and msg["target"]["name"] == "pools":
+            if msg.get("executable"):
+                return msg["executable"]
+    sys.exit("pools_ab: no pools executable built")
+
+
+def table(exe):
+    """One run's table: {(pool, contender): fraction of the limit}."""
+    out = subprocess.run([exe, "--bench"], check=True, capture_output=True, text=True).stdout
+    rows = [l for l in out.splitlines() if l.startswith("| ")]
+    cols = [c.strip() for c in rows[0].strip("|").split("|")]
+    cells = {}
+    for row in rows[1:]:
+        values = [c.strip() for c in row.strip("|").split("|")]
+        for name, value in zip(cols[4:], values[4:]):
+            cells[(values[0], name)] = float(value)
+    return cols[4:], [r.strip("|").split("|")[0].strip() for r in rows[1:]], cells
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    worktree = pathlib.Path(tmp) / "base"
+    subprocess.run(["git", "worktree", "add", "--detach", str(worktree), rev],
+                   cwd=root, check=True, capture_output=True)
+    try:
+        before = build(worktree, root / "target" / "pools-ab-base")
+        after = build(root, root / "target")
+        seen = {"before": [], "after": []}
+        for _ in range(runs):
+            for label, exe in (("before", before), ("after", after)):
+                contenders, pools, cells = table(exe)
+                seen[label].append(cells)
+    finally:
+        subprocess.run(["git", "worktree", "remove", "--force", str(worktree)],
+                       cwd=root, check=True, capture_output=True)
+
+print(f"Fractions of the limit, medians of {runs} alternating runs each: {rev} -> working tree.\n")
+print("| pool | " + " | ".join(contenders) + " |")
+print("|---|" + "---|" * len(contenders))
+for pool in pools:
+    cells = []
+    for name in contenders:
+        b = statistics.median(t[(pool, name)] for t in seen["before"])
+        a = statistics.median(t[(pool, name)] for t in seen["after"])
+        cells.append(f"{b:.2f} -> {a:.2f} ({a / b:.2f}x)")
+    print(f"| {pool} | " + " | ".join(cells) + " |")
