@@ -47,6 +47,10 @@ pub(crate) fn triangle_spans<E>(
     clip: &Rectangle,
     mut emit: impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
+    // The walks pass a span's three numbers, not the struct: to a sink
+    // not inlined into the row loop they go in registers, where a span
+    // went through the stack.
+    let mut emit = |y, x_start, x_end| emit(Span { y, x_start, x_end });
     let mut v = *vertices;
     sort_by_y(&mut v);
     let placed = match cfg!(target_arch = "arm") {
@@ -153,6 +157,7 @@ impl TriangleRows {
         until: i32,
         emit: &mut impl FnMut(Span) -> Result<(), E>,
     ) -> Result<bool, E> {
+        let emit = &mut |y, x_start, x_end| emit(Span { y, x_start, x_end });
         let frame = &self.frame;
         let last = frame.height - 1;
         // The last row of this window, relative to the frame.
@@ -229,7 +234,7 @@ fn narrow_edges(small: bool) -> impl Fn((i32, i32), (i32, i32)) -> Option<Edge<i
 fn walk_tiny<E>(
     frame: &Frame,
     [a, b, c]: [(i32, i32); 3],
-    emit: &mut impl FnMut(Span) -> Result<(), E>,
+    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
 ) -> Result<(), E> {
     let Some(mut long) = Edge::new_small(a, c) else {
         return Ok(());
@@ -341,7 +346,7 @@ fn walk<T: Narrow, E>(
     frame: &Frame,
     p: [(T, T); 3],
     edge: impl Fn((T, T), (T, T)) -> Option<Edge<T>>,
-    emit: &mut impl FnMut(Span) -> Result<(), E>,
+    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
 ) -> Result<(), E> {
     // Coordinates within the bound: the orientation is exact.
     let turn = orientation(p[0], p[1], p[2]);
@@ -387,15 +392,15 @@ fn emit_columns<E>(
     row: i32,
     x0: i32,
     x1: i32,
-    emit: &mut impl FnMut(Span) -> Result<(), E>,
+    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
 ) -> Result<(), E> {
     if x0 < x1 {
         // Inside the frame, which lies inside the clip: no overflow.
-        emit(Span {
-            y: frame.origin.y + row,
-            x_start: frame.origin.x + x0,
-            x_end: frame.origin.x + x1,
-        })?;
+        emit(
+            frame.origin.y + row,
+            frame.origin.x + x0,
+            frame.origin.x + x1,
+        )?;
     }
     Ok(())
 }
@@ -417,7 +422,7 @@ fn rows<T: Narrow, E>(
     right: &mut Edge<T>,
     from: i32,
     end: i32,
-    emit: &mut impl FnMut(Span) -> Result<(), E>,
+    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
 ) -> Result<(), E> {
     let Some(width) = T::narrow(frame.width.into()) else {
         return Ok(());
@@ -481,7 +486,8 @@ mod tests {
             };
             let spans = |tiny: bool| {
                 let mut out = heapless::Vec::<Span, 8>::new();
-                let mut push = |s: Span| out.push(s).map_err(|_| ());
+                let mut push =
+                    |y, x_start, x_end| out.push(Span { y, x_start, x_end }).map_err(|_| ());
                 let _ = match tiny {
                     true => walk_tiny(&frame, p, &mut push),
                     false => walk(&frame, p, narrow_edges(true), &mut push),
