@@ -45,9 +45,9 @@ use crate::{
 pub(crate) fn triangle_spans<E>(
     vertices: &[Vertex; 3],
     clip: &Rectangle,
-    mut emit: impl FnMut(Span) -> Result<(), E>,
+    emit: impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
-    let mut emit = by_numbers(&mut emit);
+    let mut emit = by_numbers(emit);
     let mut v = *vertices;
     sort_by_y(&mut v);
     let placed = match cfg!(target_arch = "arm") {
@@ -154,7 +154,7 @@ impl TriangleRows {
         until: i32,
         emit: &mut impl FnMut(Span) -> Result<(), E>,
     ) -> Result<bool, E> {
-        let emit = &mut by_numbers(emit);
+        let emit = &mut by_numbers(&mut *emit);
         let frame = &self.frame;
         let last = frame.height - 1;
         // The last row of this window, relative to the frame.
@@ -203,10 +203,21 @@ impl TriangleRows {
 /// loop they go in registers, where a `Span` went through the stack (a
 /// 16 px triangle on a Cortex-M4, `.ci/icount`: 1,781 instructions with a
 /// `Span`, 1,568 with its numbers).
+///
+/// It holds `emit` itself, not a reference to it: the row loop then
+/// receives the sink's closure behind its own `&mut`, which nothing else
+/// writes, and keeps the closure's state (the sink, the colour) in
+/// registers across the bytes a span stores. Through a second reference
+/// the compiler reloaded it after every span (x86-64, random triangles
+/// drawn on the framebuffer, instructions counted by callgrind: medium
+/// 5,435 a triangle before, 5,211 after; large 16,619 and 15,968). On a
+/// Cortex-M4 the sink's fill is now inlined into the row loop: 240 px
+/// 1.48 instructions a pixel before, 1.36 after, but 16 px 1,568
+/// instructions before and 1,661 after (`.ci/icount`).
 #[inline(always)]
 fn by_numbers<E>(
-    emit: &mut impl FnMut(Span) -> Result<(), E>,
-) -> impl FnMut(i32, i32, i32) -> Result<(), E> + '_ {
+    mut emit: impl FnMut(Span) -> Result<(), E>,
+) -> impl FnMut(i32, i32, i32) -> Result<(), E> {
     move |y, x_start, x_end| emit(Span { y, x_start, x_end })
 }
 

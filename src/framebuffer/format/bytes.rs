@@ -238,8 +238,12 @@ fn fill_overlapping<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
         let (blocks, rest) = bytes.as_chunks_mut::<16>();
         blocks.fill(pattern);
         if !rest.is_empty() {
-            if let Some(last) = bytes.get_mut(n - 16..) {
-                last.copy_from_slice(&pattern);
+            // An array, one store: copied from a slice of the pattern, it
+            // went as an 8-byte store and four 2-byte ones on x86-64
+            // (random medium triangles, callgrind: 5,211 instructions a
+            // triangle before, 4,969 after).
+            if let Some(last) = bytes.last_chunk_mut::<16>() {
+                *last = pattern;
             }
         }
     } else if n >= 8 {
