@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""Instructions a triangle for the random pools, counted by callgrind.
+
+    python3 benches/pools_callgrind.py [--rev REV] [--contenders a,b,...]
+
+Builds `benches/pools_pass.rs` and runs it under `valgrind --tool=callgrind`
+for each pool and contender, once with 1 pass and once with 3; the
+difference over two passes, divided by the pool's triangles, is the
+contender's instructions a triangle (x86-64, or whatever this machine
+is), without the pool's preparation. Prints them as a Markdown table,
+with the limit's count over each contender's (the fraction of the
+limit's work, in instructions). With `--rev`, also builds REV in a
+temporary git worktree and prints REV -> working tree for each cell.
+
+Counts are exact and repeatable: they do not move with the machine's
+load, so they show a change to the fill that times (`benches/pools.rs`,
+`benches/pools_ab.py`) can only show in many alternating runs. They are
+not times: a division or a mispredicted branch counts as one
+instruction. Installs valgrind if it is missing.
+"""
+import argparse
+import json
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+root = pathlib.Path(__file__).resolve().parent.parent
+POOLS = ["tiny 4 px", "small 16 px", "medium 64 px", "large 240 px", "mesh 32x24 of 10 px"]
+TRIANGLES = [512, 256, 64, 16, 1536]
+ALL = ["limit", "draw_spans", "for_each_span", "EdgeWalk@12", "tiny-skia", "embedded-graphics"]
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--rev")
+parser.add_argument("--contenders", default=",".join(ALL))
+args = parser.parse_args()
+names = args.contenders.split(",")
+if "limit" not in names:
+    names.insert(0, "limit")
+
+if shutil.which("valgrind") is None:
+    subprocess.run(["apt-get", "update"], check=True, capture_output=True)
+    subprocess.run(["apt-get", "install", "-y", "valgrind"], check=True, capture_output=True)
+
+
+def build(tree, target_dir):
+    """The pools_pass executable built in `tree`."""
+    out = subprocess.run(
+        ["cargo", "bench", "--bench", "pools_pass", "--no-run", "--message-format=json"],
+        cwd=tree,
+        env={**os.environ, "CARGO_TARGET_DIR": str(target_dir)},
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout
+    for line in out.splitlines():
+        msg = json.loads(line)
+        if msg.get("reason") == "compiler-artifact" and msg["target"]["name"] == "pools_pass":
+            if msg.get("executable"):
+                return msg["executable"]
+    sys.exit("pools_callgrind: no pools_pass executable built")
+
+
+def instructions(exe, pool, name, passes):
+    """Instructions callgrind counts in one run of `exe`."""
+    run = subprocess.run(
+        ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
+         exe, str(pool), name, str(passes)],
+        check=True, capture_output=True, text=True,
+    )
+    m = re.search(r"Collected : (\d+)", run.stderr)
+    if not m:
+        sys.exit(f"pools_callgrind: no count in\n{run.stderr}")
+    return int(m.group(1))
+
+
+def counts(exe):
+    """{(pool, contender): instructions a triangle}."""
+    out = {}
+    for i, tris in enumerate(TRIANGLES):
+        for name in names:
+            one, three = (instructions(exe, i, name, n) for n in (1, 3))
+            out[(i, name)] = (three - one) / 2 / tris
+    return out
+
+
+def ratio(limit, n):
+    return f"{limit / n:.2f}"
+
+
+after_exe = build(root, root / "target")
+if args.rev:
+    with tempfile.TemporaryDirectory() as tmp:
+        worktree = pathlib.Path(tmp) / "base"
+        subprocess.run(["git", "worktree", "add", "--detach", str(worktree), args.rev],
+                       cwd=root, check=True, capture_output=True)
+        try:
+            before = counts(build(worktree, root / "target" / "pools-ab-base"))
+        finally:
+            subprocess.run(["git", "worktree", "remove", "--force", str(worktree)],
+                           cwd=root, check=True, capture_output=True)
+after = counts(after_exe)
+
+machine = subprocess.run(["uname", "-m"], capture_output=True, text=True).stdout.strip()
+if args.rev:
+    print(f"Instructions a triangle ({machine}, callgrind): {args.rev} -> working tree.\n")
+    print("| pool | " + " | ".join(names) + " |")
+    print("|---|" + "---|" * len(names))
+    for i, pool in enumerate(POOLS):
+        cells = []
+        for name in names:
+            b, a = before[(i, name)], after[(i, name)]
+            cells.append(f"{b:,.0f} -> {a:,.0f} ({a / b:.2f}x)")
+        print(f"| {pool} | " + " | ".join(cells) + " |")
+else:
+    print(f"Instructions a triangle ({machine}, callgrind), and in brackets the limit's over each"
+          " contender's.\n")
+    print("| pool | " + " | ".join(names) + " |")
+    print("|---|" + "---|" * len(names))
+    for i, pool in enumerate(POOLS):
+        limit = after[(i, "limit")]
+        cells = [f"{limit:,.0f}"] + [
+            f"{after[(i, n)]:,.0f} ({ratio(limit, after[(i, n)])})" for n in names[1:]
+        ]
+        print(f"| {pool} | " + " | ".join(cells) + " |")
