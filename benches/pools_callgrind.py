@@ -10,7 +10,8 @@ contender's instructions a triangle (x86-64, or whatever this machine
 is), without the pool's preparation. Prints them as a Markdown table,
 with the limit's count over each contender's (the fraction of the
 limit's work, in instructions). With `--rev`, also builds REV in a
-temporary git worktree and prints REV -> working tree for each cell.
+temporary git worktree and prints REV -> working tree for each cell (a
+REV from before this tool gets today's `benches/pools_pass.rs`).
 
 Counts are exact and repeatable: they do not move with the machine's
 load, so they show a change to the fill that times (`benches/pools.rs`,
@@ -98,6 +99,11 @@ if args.rev:
         subprocess.run(["git", "worktree", "add", "--detach", str(worktree), args.rev],
                        cwd=root, check=True, capture_output=True)
         try:
+            # A revision from before this tool: give it today's pass runner.
+            if not (worktree / "benches" / "pools_pass.rs").exists():
+                shutil.copy(root / "benches" / "pools_pass.rs", worktree / "benches")
+                with open(worktree / "Cargo.toml", "a") as toml:
+                    toml.write('\n[[bench]]\nname = "pools_pass"\nharness = false\n')
             before = counts(build(worktree, root / "target" / "pools-ab-base"))
         finally:
             subprocess.run(["git", "worktree", "remove", "--force", str(worktree)],
