@@ -47,7 +47,12 @@ pub(crate) fn triangle_spans<E>(
     clip: &Rectangle,
     emit: impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
+    #[cfg(not(target_arch = "arm"))]
     let mut emit = by_numbers(emit);
+    #[cfg(target_arch = "arm")]
+    let mut emit = emit;
+    #[cfg(target_arch = "arm")]
+    let mut emit = by_numbers_ref(&mut emit);
     let mut v = *vertices;
     sort_by_y(&mut v);
     let placed = match cfg!(target_arch = "arm") {
@@ -154,7 +159,7 @@ impl TriangleRows {
         until: i32,
         emit: &mut impl FnMut(Span) -> Result<(), E>,
     ) -> Result<bool, E> {
-        let emit = &mut by_numbers(&mut *emit);
+        let emit = &mut by_numbers_ref(emit);
         let frame = &self.frame;
         let last = frame.height - 1;
         // The last row of this window, relative to the frame.
@@ -204,16 +209,33 @@ impl TriangleRows {
 /// 16 px triangle on a Cortex-M4, `.ci/icount`: 1,781 instructions with a
 /// `Span`, 1,568 with its numbers).
 ///
-/// It holds `emit` itself, not a reference to it: the row loop then
-/// receives the sink's closure behind its own `&mut`, which nothing else
-/// writes, and keeps the closure's state (the sink, the colour) in
-/// registers across the bytes a span stores. Through a second reference
-/// the compiler reloaded it after every span (x86-64, random triangles
-/// drawn on the framebuffer, instructions counted by callgrind: medium
-/// 5,435 a triangle before, 5,211 after; large 16,619 and 15,968). On a
-/// Cortex-M4 the sink's fill is now inlined into the row loop: 240 px
-/// 1.48 instructions a pixel before, 1.36 after, but 16 px 1,568
-/// instructions before and 1,661 after (`.ci/icount`).
+/// This one holds a reference to `emit`: what the band walk and 32-bit
+/// ARM use. See [`by_numbers`] for hosts.
+#[inline(always)]
+fn by_numbers_ref<E>(
+    emit: &mut impl FnMut(Span) -> Result<(), E>,
+) -> impl FnMut(i32, i32, i32) -> Result<(), E> + '_ {
+    move |y, x_start, x_end| emit(Span { y, x_start, x_end })
+}
+
+/// [`by_numbers_ref`] holding `emit` itself, as hosts walk a whole
+/// triangle: the row loop then receives the sink's closure behind its own
+/// `&mut`, which nothing else writes, and keeps the closure's state (the
+/// sink, the colour) in registers across the bytes a span stores; through
+/// the second reference it reloaded them after every span (x86-64, random
+/// triangles drawn on the framebuffer, instructions counted by callgrind:
+/// medium 5,435 a triangle with the reference, 5,211 without; large
+/// 16,619 and 15,968).
+///
+/// Not on 32-bit ARM: there the sink's fill is then inlined into the row
+/// loop, whose registers are already taken by the two edges, and it
+/// spills. A Cortex-M4 (`.ci/icount`) drew the 240 px triangle in 1.36
+/// instructions a pixel instead of 1.48, but the 16 px one in 1,661
+/// instead of 1,568, the built-in scene in 630,311 instead of 624,578,
+/// and a single 16 px triangle (`.ci/itrace`) in 2,120 instead of 1,588:
+/// its spans under 16 px were filled at 6 instructions a pixel instead of
+/// 2.5, with the colour and a loop value reloaded for every pixel.
+#[cfg(not(target_arch = "arm"))]
 #[inline(always)]
 fn by_numbers<E>(
     mut emit: impl FnMut(Span) -> Result<(), E>,
@@ -507,7 +529,7 @@ mod tests {
             let spans = |tiny: bool| {
                 let mut out = heapless::Vec::<Span, 8>::new();
                 let mut push = |s: Span| out.push(s).map_err(|_| ());
-                let mut push = by_numbers(&mut push);
+                let mut push = by_numbers_ref(&mut push);
                 let _ = match tiny {
                     true => walk_tiny(&frame, p, &mut push),
                     false => walk(&frame, p, narrow_edges(true), &mut push),
