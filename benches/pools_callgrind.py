@@ -32,7 +32,7 @@ import tempfile
 root = pathlib.Path(__file__).resolve().parent.parent
 POOLS = ["tiny 4 px", "small 16 px", "medium 64 px", "large 240 px", "mesh 32x24 of 10 px"]
 TRIANGLES = [512, 256, 64, 16, 1536]
-ALL = ["limit", "draw_spans", "for_each_span", "EdgeWalk@12", "tiny-skia", "embedded-graphics"]
+ALL = ["limit", "draw", "draw_spans", "for_each_span", "EdgeWalk@12", "tiny-skia", "embedded-graphics"]
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--rev")
