@@ -436,7 +436,10 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
     /// Inlined, so that a span from [`DrawTargetSink`](crate::DrawTargetSink) (one row) is
     /// filled where it is made, as through the framebuffer's own
     /// [`SpanSink`]; taller rectangles go to an out-of-line fill.
-    #[inline]
+    // Inlined on hosts into the triangle walks' row loop, as
+    // `fill_span` (see `triangle::fill::by_numbers`).
+    #[cfg_attr(not(target_arch = "arm"), inline(always))]
+    #[cfg_attr(target_arch = "arm", inline)]
     fn fill_solid(&mut self, area: &Rectangle, color: F::Color) -> Result<(), Infallible> {
         if area.size.height == 1 {
             // One row, as `DrawTargetSink` sends spans: clipped as a span.
@@ -493,7 +496,10 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
         Rectangle::new(Point::zero(), self.size())
     }
 
-    #[inline]
+    // Inlined on hosts into the triangle walks' row loop (see
+    // `triangle::fill::by_numbers`).
+    #[cfg_attr(not(target_arch = "arm"), inline(always))]
+    #[cfg_attr(target_arch = "arm", inline)]
     fn fill_span(&mut self, span: Span, color: F::Color) -> Result<(), Infallible> {
         if let (Ok(y), Ok(x0), Ok(x1)) = (
             usize::try_from(span.y),

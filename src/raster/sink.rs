@@ -205,7 +205,10 @@ impl<D: DrawTarget> SpanSink<D::Color> for DrawTargetSink<'_, D> {
         self.bounds
     }
 
-    #[inline]
+    // Inlined on hosts into the triangle walks' row loop (see
+    // `triangle::fill::by_numbers`).
+    #[cfg_attr(not(target_arch = "arm"), inline(always))]
+    #[cfg_attr(target_arch = "arm", inline)]
     fn fill_span(&mut self, span: Span, color: D::Color) -> Result<(), D::Error> {
         self.target.fill_solid(&span.rect(), color)
     }

@@ -225,7 +225,11 @@ fn by_numbers_ref<E>(
 /// the second reference it reloaded them after every span (x86-64, random
 /// triangles drawn on the framebuffer, instructions counted by callgrind:
 /// medium 5,435 a triangle with the reference, 5,211 without; large
-/// 16,619 and 15,968).
+/// 16,619 and 15,968). The closure is always inlined, as are the sink
+/// calls behind it on hosts (the framebuffer's `fill_span` and
+/// `fill_solid`, `DrawTargetSink::fill_span`): left to the compiler, any
+/// growth of the fill made it call the sink once a row instead, for about
+/// 15 instructions more a row.
 ///
 /// Not on 32-bit ARM: there the sink's fill is then inlined into the row
 /// loop, whose registers are already taken by the two edges, and it
@@ -240,6 +244,7 @@ fn by_numbers_ref<E>(
 fn by_numbers<E>(
     mut emit: impl FnMut(Span) -> Result<(), E>,
 ) -> impl FnMut(i32, i32, i32) -> Result<(), E> {
+    #[inline(always)]
     move |y, x_start, x_end| emit(Span { y, x_start, x_end })
 }
 

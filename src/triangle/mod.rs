@@ -313,8 +313,12 @@ impl<C: PixelColor> SpanDrawable for FilledTriangle<C> {
 
     fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
         let clip = sink.bounds();
-        self.triangle
-            .for_each_span(&clip, |span| sink.fill_span(span, self.color))
+        self.triangle.for_each_span(
+            &clip,
+            // Into the row loop on hosts (see `fill::by_numbers`).
+            #[cfg_attr(not(target_arch = "arm"), inline(always))]
+            |span| sink.fill_span(span, self.color),
+        )
     }
 }
 
