@@ -19,35 +19,14 @@ other contenders between its rounds, one change looked 10 % faster on the
 small pool and was 20 % slower in the full bench (BENCHMARKS.md, "Where a
 triangle's instructions go").
 """
-import json
-import os
-import pathlib
 import statistics
 import subprocess
 import sys
-import tempfile
 
-root = pathlib.Path(__file__).resolve().parent.parent
+from revisions import build_bench, root, worktree
+
 rev = sys.argv[1]
 runs = int(sys.argv[2]) if len(sys.argv) > 2 else 5
-
-
-def build(tree, target_dir):
-    """The pools bench executable built in `tree`."""
-    out = subprocess.run(
-        ["cargo", "bench", "--bench", "pools", "--no-run", "--message-format=json"],
-        cwd=tree,
-        env={**os.environ, "CARGO_TARGET_DIR": str(target_dir)},
-        check=True,
-        capture_output=True,
-        text=True,
-    ).stdout
-    for line in out.splitlines():
-        msg = json.loads(line)
-        if msg.get("reason") == "compiler-artifact" and msg["target"]["name"] == "pools":
-            if msg.get("executable"):
-                return msg["executable"]
-    sys.exit("pools_ab: no pools executable built")
 
 
 def table(exe):
@@ -68,21 +47,14 @@ def table(exe):
     return names, [r.strip("|").split("|")[0].strip() for r in rows[1:]], cells
 
 
-with tempfile.TemporaryDirectory() as tmp:
-    worktree = pathlib.Path(tmp) / "base"
-    subprocess.run(["git", "worktree", "add", "--detach", str(worktree), rev],
-                   cwd=root, check=True, capture_output=True)
-    try:
-        before = build(worktree, root / "target" / "pools-ab-base")
-        after = build(root, root / "target")
-        seen = {"before": [], "after": []}
-        for _ in range(runs):
-            for label, exe in (("before", before), ("after", after)):
-                contenders, pools, cells = table(exe)
-                seen[label].append(cells)
-    finally:
-        subprocess.run(["git", "worktree", "remove", "--force", str(worktree)],
-                       cwd=root, check=True, capture_output=True)
+with worktree(rev) as base:
+    before = build_bench(base, root / "target" / "pools-ab-base", "pools")
+    after = build_bench(root, root / "target", "pools")
+    seen = {"before": [], "after": []}
+    for _ in range(runs):
+        for label, exe in (("before", before), ("after", after)):
+            contenders, pools, cells = table(exe)
+            seen[label].append(cells)
 
 print(f"Nanoseconds a triangle, medians of {runs} alternating runs each: {rev} -> working tree.\n")
 print("| pool | " + " | ".join(contenders) + " |")

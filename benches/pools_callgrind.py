@@ -20,16 +20,13 @@ not times: a division or a mispredicted branch counts as one
 instruction. Installs valgrind if it is missing.
 """
 import argparse
-import json
-import os
-import pathlib
 import re
 import shutil
 import subprocess
 import sys
-import tempfile
 
-root = pathlib.Path(__file__).resolve().parent.parent
+from revisions import build_bench, root, worktree
+
 POOLS = ["tiny 4 px", "small 16 px", "medium 64 px", "large 240 px", "mesh 32x24 of 10 px"]
 TRIANGLES = [512, 256, 64, 16, 1536]
 ALL = ["limit", "draw", "draw_spans", "for_each_span", "EdgeWalk@12", "tiny-skia", "embedded-graphics"]
@@ -45,24 +42,6 @@ if "limit" not in names:
 if shutil.which("valgrind") is None:
     subprocess.run(["apt-get", "update"], check=True, capture_output=True)
     subprocess.run(["apt-get", "install", "-y", "valgrind"], check=True, capture_output=True)
-
-
-def build(tree, target_dir):
-    """The pools_pass executable built in `tree`."""
-    out = subprocess.run(
-        ["cargo", "bench", "--bench", "pools_pass", "--no-run", "--message-format=json"],
-        cwd=tree,
-        env={**os.environ, "CARGO_TARGET_DIR": str(target_dir)},
-        check=True,
-        capture_output=True,
-        text=True,
-    ).stdout
-    for line in out.splitlines():
-        msg = json.loads(line)
-        if msg.get("reason") == "compiler-artifact" and msg["target"]["name"] == "pools_pass":
-            if msg.get("executable"):
-                return msg["executable"]
-    sys.exit("pools_callgrind: no pools_pass executable built")
 
 
 def instructions(exe, pool, name, passes):
@@ -92,22 +71,15 @@ def ratio(limit, n):
     return f"{limit / n:.2f}"
 
 
-after_exe = build(root, root / "target")
+after_exe = build_bench(root, root / "target", "pools_pass")
 if args.rev:
-    with tempfile.TemporaryDirectory() as tmp:
-        worktree = pathlib.Path(tmp) / "base"
-        subprocess.run(["git", "worktree", "add", "--detach", str(worktree), args.rev],
-                       cwd=root, check=True, capture_output=True)
-        try:
-            # A revision from before this tool: give it today's pass runner.
-            if not (worktree / "benches" / "pools_pass.rs").exists():
-                shutil.copy(root / "benches" / "pools_pass.rs", worktree / "benches")
-                with open(worktree / "Cargo.toml", "a") as toml:
-                    toml.write('\n[[bench]]\nname = "pools_pass"\nharness = false\n')
-            before = counts(build(worktree, root / "target" / "pools-ab-base"))
-        finally:
-            subprocess.run(["git", "worktree", "remove", "--force", str(worktree)],
-                           cwd=root, check=True, capture_output=True)
+    with worktree(args.rev) as base:
+        # A revision from before this tool: give it today's pass runner.
+        if not (base / "benches" / "pools_pass.rs").exists():
+            shutil.copy(root / "benches" / "pools_pass.rs", base / "benches")
+            with open(base / "Cargo.toml", "a") as toml:
+                toml.write('\n[[bench]]\nname = "pools_pass"\nharness = false\n')
+        before = counts(build_bench(base, root / "target" / "pools-ab-base", "pools_pass"))
 after = counts(after_exe)
 
 machine = subprocess.run(["uname", "-m"], capture_output=True, text=True).stdout.strip()
