@@ -250,7 +250,6 @@ fn fill_overlapping<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
         // loop's set-up and its remainder took about 20 instructions a row
         // on spans of a few blocks (random medium triangles, callgrind:
         // 4,970 instructions a triangle through it, 4,482 so).
-
         if let Some(first) = bytes.first_chunk_mut::<16>() {
             *first = pattern;
         }
