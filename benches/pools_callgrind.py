@@ -10,8 +10,9 @@ contender's instructions a triangle (x86-64, or whatever this machine
 is), without the pool's preparation. Prints them as a Markdown table,
 with the limit's count over each contender's (the fraction of the
 limit's work, in instructions). With `--rev`, also builds REV in a
-temporary git worktree and prints REV -> working tree for each cell (a
-REV from before this tool gets today's `benches/pools_pass.rs`).
+temporary git worktree and prints REV -> working tree for each cell (REV
+runs today's `benches/pools_pass.rs`, the pools and contenders of its own
+`benches/common/pools.rs`).
 
 Counts are exact and repeatable: they do not move with the machine's
 load, so they show a change to the fill that times (`benches/pools.rs`,
@@ -27,8 +28,7 @@ import sys
 
 from revisions import build_bench, root, worktree
 
-POOLS = ["tiny 4 px", "small 16 px", "medium 64 px", "large 240 px", "mesh 32x24 of 10 px"]
-TRIANGLES = [512, 256, 64, 16, 1536]
+POOLS = 5
 ALL = ["limit", "draw", "draw_spans", "for_each_span", "EdgeWalk@12", "tiny-skia", "embedded-graphics"]
 
 parser = argparse.ArgumentParser()
@@ -45,26 +45,29 @@ if shutil.which("valgrind") is None:
 
 
 def instructions(exe, pool, name, passes):
-    """Instructions callgrind counts in one run of `exe`."""
+    """Instructions callgrind counts in one run of `exe`, and the pool's
+    name and number of triangles as `exe` prints them."""
     run = subprocess.run(
         ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
          exe, str(pool), name, str(passes)],
         check=True, capture_output=True, text=True,
     )
     m = re.search(r"Collected : (\d+)", run.stderr)
-    if not m:
-        sys.exit(f"pools_callgrind: no count in\n{run.stderr}")
-    return int(m.group(1))
+    p = re.search(r"^pool\t(.*)\t(\d+)$", run.stdout, re.M)
+    if not m or not p:
+        sys.exit(f"pools_callgrind: no count in\n{run.stderr}\n{run.stdout}")
+    return int(m.group(1)), p.group(1), int(p.group(2))
 
 
 def counts(exe):
-    """{(pool, contender): instructions a triangle}."""
-    out = {}
-    for i, tris in enumerate(TRIANGLES):
+    """{(pool, contender): instructions a triangle} and the pools' names."""
+    out, pools = {}, []
+    for i in range(POOLS):
         for name in names:
-            one, three = (instructions(exe, i, name, n) for n in (1, 3))
+            (one, pool, tris), (three, _, _) = (instructions(exe, i, name, n) for n in (1, 3))
             out[(i, name)] = (three - one) / 2 / tris
-    return out
+        pools.append(pool)
+    return out, pools
 
 
 def ratio(limit, n):
@@ -74,20 +77,22 @@ def ratio(limit, n):
 after_exe = build_bench(root, root / "target", "pools_pass")
 if args.rev:
     with worktree(args.rev) as base:
-        # A revision from before this tool: give it today's pass runner.
-        if not (base / "benches" / "pools_pass.rs").exists():
-            shutil.copy(root / "benches" / "pools_pass.rs", base / "benches")
+        # Both sides run today's pass runner (a revision may have an older
+        # one, or none: then its Cargo.toml gets the bench too).
+        had = (base / "benches" / "pools_pass.rs").exists()
+        shutil.copy(root / "benches" / "pools_pass.rs", base / "benches")
+        if not had:
             with open(base / "Cargo.toml", "a") as toml:
                 toml.write('\n[[bench]]\nname = "pools_pass"\nharness = false\n')
-        before = counts(build_bench(base, root / "target" / "pools-ab-base", "pools_pass"))
-after = counts(after_exe)
+        before, _ = counts(build_bench(base, root / "target" / "pools-ab-base", "pools_pass"))
+after, pools = counts(after_exe)
 
 machine = subprocess.run(["uname", "-m"], capture_output=True, text=True).stdout.strip()
 if args.rev:
     print(f"Instructions a triangle ({machine}, callgrind): {args.rev} -> working tree.\n")
     print("| pool | " + " | ".join(names) + " |")
     print("|---|" + "---|" * len(names))
-    for i, pool in enumerate(POOLS):
+    for i, pool in enumerate(pools):
         cells = []
         for name in names:
             b, a = before[(i, name)], after[(i, name)]
@@ -98,7 +103,7 @@ else:
           " contender's.\n")
     print("| pool | " + " | ".join(names) + " |")
     print("|---|" + "---|" * len(names))
-    for i, pool in enumerate(POOLS):
+    for i, pool in enumerate(pools):
         limit = after[(i, "limit")]
         cells = [f"{limit:,.0f}"] + [
             f"{after[(i, n)]:,.0f} ({ratio(limit, after[(i, n)])})" for n in names[1:]

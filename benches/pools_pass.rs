@@ -5,7 +5,8 @@
 //!
 //! `pools_pass POOL CONTENDER PASSES` runs `PASSES` passes of the named
 //! contender (`limit`, `draw_spans`, ...) over pool number `POOL` (0 to
-//! 4, in the order of `benches/pools.rs`); with no arguments (as `cargo
+//! 4, in the order of `benches/pools.rs`) and prints the pool's name and
+//! number of triangles; with no arguments (as `cargo
 //! test --all-targets` runs it), one pass of every contender over every
 //! pool, as a smoke test.
 
@@ -32,8 +33,10 @@ fn main() {
     let [pool, name, passes] = &args[..] else {
         panic!("usage: pools_pass POOL CONTENDER PASSES");
     };
-    let (_, generate) = POOLS[pool.parse::<usize>().expect("a pool number")];
+    let (pool_name, generate) = POOLS[pool.parse::<usize>().expect("a pool number")];
     let pool = Prepared::new(&generate());
+    // For the counting script: the pool's name and size.
+    println!("pool\t{pool_name}\t{}", pool.tris.len());
     let mut targets = Targets::new();
     let mut all = contenders(&pool, &mut targets);
     let (_, pass) = all

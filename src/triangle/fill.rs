@@ -47,6 +47,8 @@ pub(crate) fn triangle_spans<E>(
     clip: &Rectangle,
     emit: impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
+    // Hosts hold the sink's closure, 32-bit ARM a reference to it (see
+    // `by_numbers`).
     #[cfg(not(target_arch = "arm"))]
     let mut emit = by_numbers(emit);
     #[cfg(target_arch = "arm")]
