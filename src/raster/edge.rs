@@ -192,10 +192,16 @@ impl<T: Wide> Edge<T> {
 
     /// Moves to the next row. Written as selects, not branches: whether
     /// the remainder wraps is data, and a mispredicted branch per row
-    /// would cost more than the whole step.
+    /// would cost more than the whole step. Both `s` and `r` lie in
+    /// `0..dy`, so they compare as unsigned: x86-64 then adds the
+    /// comparison's carry to the crossing (`cmp`, `adc`), where a signed
+    /// comparison took a `setl` and an add (random triangles on the
+    /// framebuffer, instructions counted by callgrind: small 1,345 a
+    /// triangle → 1,304, medium 4,482 → 4,287, large 15,086 → 14,512).
+    /// 32-bit ARM compiles both to the same code.
     #[inline(always)]
     pub(crate) fn step(&mut self) {
-        let wrap = self.s < self.r;
+        let wrap = self.s.below(self.r);
         self.biased = self.biased + self.q + if wrap { T::ONE } else { T::ZERO };
         self.s = self.s - self.r + if wrap { self.dy } else { T::ZERO };
     }

@@ -40,16 +40,19 @@ pub(crate) trait Wide:
     /// `floor(self / d)` and `self - d floor(self / d)` (in `0..d`), for
     /// `d > 0`; `None` for `d <= 0`.
     fn div_rem_floor(self, d: Self) -> Option<(Self, Self)>;
+    /// `self < other` for two values the caller has shown non-negative,
+    /// compared as unsigned (x86-64 then adds the result as a carry).
+    fn below(self, other: Self) -> bool;
 }
 
 macro_rules! impl_wide {
-    ($t:ty, $difference:expr) => {
-        impl_wide!($t, $difference, |n: $t, d: $t| (
+    ($t:ty, $u:ty, $difference:expr) => {
+        impl_wide!($t, $u, $difference, |n: $t, d: $t| (
             n.div_euclid(d),
             n.rem_euclid(d)
         ));
     };
-    ($t:ty, $difference:expr, $floor:expr) => {
+    ($t:ty, $u:ty, $difference:expr, $floor:expr) => {
         impl Wide for $t {
             #[inline(always)]
             fn difference(a: i32, b: i32, within_2_29: bool) -> Option<Self> {
@@ -75,14 +78,21 @@ macro_rules! impl_wide {
                 // cannot overflow (only `MIN / -1` does).
                 (d > 0).then(|| $floor(self, d))
             }
+            #[inline(always)]
+            fn below(self, other: Self) -> bool {
+                debug_assert!(self >= 0 && other >= 0);
+                (self as $u) < (other as $u)
+            }
         }
     };
 }
 
 // With `within_2_29`, `a - b` does not overflow `i32`.
-impl_wide!(i32, |a: i32, b: i32, within: bool| within.then(|| a - b));
+impl_wide!(i32, u32, |a: i32, b: i32, within: bool| within
+    .then(|| a - b));
 impl_wide!(
     i64,
+    u64,
     |a: i32, b: i32, _| Some(i64::from(a) - i64::from(b)),
     |n: i64, d: i64| match cfg!(target_pointer_width = "32") {
         true => floor_div_rem_by_shifts(n, d),
@@ -145,7 +155,7 @@ fn floor_div_rem_by_shifts(n: i64, d: i64) -> (i64, i64) {
     (q.unwrap_or(i64::MIN), i64::try_from(r).unwrap_or(0))
 }
 
-impl_wide!(i128, |a: i32, b: i32, _| Some(
+impl_wide!(i128, u128, |a: i32, b: i32, _| Some(
     i128::from(a) - i128::from(b)
 ));
 
