@@ -17,7 +17,7 @@ use embedded_raster::{
         buffer_size, row_size, Bgr565Be, Bgr565Le, BinaryMsb, Gray2Lsb, Gray2Msb, Gray4Lsb,
         Gray4Msb, Gray8Bytes, PixelFormat, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
     },
-    Framebuffer,
+    Framebuffer, Span, SpanSink,
 };
 use proptest::prelude::*;
 
@@ -290,6 +290,22 @@ enum Op<C> {
     Generated(Rectangle, u64),
     Pixels(Vec<(Point, C)>),
     Clear(C),
+    /// `SpanSink::fill_span`, with any coordinates (a span outside the
+    /// sink's contract is dropped whole).
+    Span(Span, C),
+}
+
+/// A span coordinate for a framebuffer `limit` pixels long: mostly near
+/// it, sometimes negative or at the ends of the `i32` range.
+fn span_coordinate(limit: usize) -> impl Strategy<Value = i32> {
+    let limit = limit as i32;
+    prop_oneof![
+        8 => -3..limit + 3,
+        1 => Just(i32::MIN),
+        1 => Just(i32::MAX),
+        1 => Just(-1 - limit),
+        1 => any::<i32>(),
+    ]
 }
 
 /// A start and length along one axis of a framebuffer `limit` pixels
@@ -341,6 +357,8 @@ fn arb_op<F: Spec>(w: usize, h: usize) -> impl Strategy<Value = Op<F::Color>> {
         2 => (arb_rect(w, h), any::<u64>()).prop_map(|(r, s)| Op::Generated(r, s)),
         2 => prop::collection::vec((arb_point(w, h), color()), 0..20).prop_map(Op::Pixels),
         1 => color().prop_map(Op::Clear),
+        3 => (span_coordinate(h), span_coordinate(w), span_coordinate(w), color())
+            .prop_map(|(y, x_start, x_end, c)| Op::Span(Span { y, x_start, x_end }, c)),
     ]
 }
 
@@ -400,6 +418,21 @@ fn run<F: Spec, const W: usize, const H: usize, const N: usize>(
             Op::Clear(c) => {
                 fb.clear(*c).unwrap();
                 model.px.fill(*c);
+            }
+            Op::Span(span, c) => {
+                fb.fill_span(*span, *c).unwrap();
+                let (y, x0, x1) = (
+                    i64::from(span.y),
+                    i64::from(span.x_start),
+                    i64::from(span.x_end),
+                );
+                // Within the contract: a row of the framebuffer, columns
+                // `x0..x1` inside it; anything else changes nothing.
+                if (0..model.h).contains(&y) && 0 <= x0 && x0 <= x1 && x1 <= model.w {
+                    for x in x0..x1 {
+                        model.set(x, y, *c);
+                    }
+                }
             }
         }
         let bytes = encode::<F>(W, &model.px);
@@ -746,7 +779,6 @@ fn framebuffer_can_be_static() {
 /// row: the framebuffer's storage holds the rows back to back.
 #[test]
 fn sink_span_past_the_row_end_stays_out_of_the_next_row() {
-    use embedded_raster::{Span, SpanSink};
     let mut fb = Small::new();
     fb.fill_span(
         Span {

@@ -249,7 +249,9 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     /// formats). A `const fn`, so the framebuffer can be a `static`.
     ///
     /// It fails to compile unless `N` is
-    /// [`buffer_size::<F>(W, H)`](buffer_size).
+    /// [`buffer_size::<F>(W, H)`](buffer_size), and unless `W` and `H`
+    /// are at most `i32::MAX` (embedded-graphics addresses pixels by `i32`
+    /// coordinates: columns and rows past it could not be drawn).
     ///
     /// # Examples
     ///
@@ -269,11 +271,23 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     ///
     /// let fb = Framebuffer::<Rgb565Le, 8, 8, 64>::new(); // needs 128 bytes
     /// ```
+    ///
+    /// So is a side past `i32::MAX`, even with no pixels at all:
+    ///
+    /// ```compile_fail
+    /// use embedded_raster::{framebuffer::Gray8Bytes, Framebuffer};
+    ///
+    /// let fb = Framebuffer::<Gray8Bytes, { 1 << 31 }, 0, 0>::new();
+    /// ```
     pub const fn new() -> Self {
         const {
             assert!(
                 F::BITS_PER_PIXEL > 0 && N == buffer_size::<F>(W, H),
                 "Framebuffer<F, W, H, N> needs N == buffer_size::<F>(W, H)"
+            );
+            assert!(
+                W as u64 <= i32::MAX as u64 && H as u64 <= i32::MAX as u64,
+                "Framebuffer<F, W, H, N> needs W and H at most i32::MAX"
             );
         }
         Self {
@@ -501,20 +515,25 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
     #[cfg_attr(not(target_arch = "arm"), inline(always))]
     #[cfg_attr(target_arch = "arm", inline)]
     fn fill_span(&mut self, span: Span, color: F::Color) -> Result<(), Infallible> {
-        if let (Ok(y), Ok(x0), Ok(x1)) = (
-            usize::try_from(span.y),
-            usize::try_from(span.x_start),
-            usize::try_from(span.x_end),
-        ) {
-            // Its own row only: a span past the row's end (a caller breaking
-            // the sink's contract) is dropped, not wrapped into the next row.
-            // `y < H`, so `y * STRIDE + STRIDE <= N`: no overflow.
-            let row = (y < H).then(|| y * Self::STRIDE);
-            if let Some(row) =
-                row.and_then(|start| self.data.0.get_mut(start..start + Self::STRIDE))
-            {
-                F::fill_span(row, x0..x1, color);
-            }
+        // A negative coordinate, read as `u32`, is 2^31 or more: past every
+        // bound below (`W` and `H` are at most `i32::MAX`, see `new`), so
+        // each coordinate is tested once, not for its sign apart. x86-64,
+        // random triangles drawn by `draw_spans`, instructions counted by
+        // callgrind: small 1,304 a triangle → 1,229, medium 4,287 → 3,998,
+        // large 14,512 → 13,800 against `usize::try_from` with no test of
+        // `x1` against `W`; the same tests written with
+        // `u32::try_from(v).unwrap_or(u32::MAX)` took small 1,390. The
+        // Cortex-M4 gains too (`.ci/icount`: 240 px 1.48 → 1.42
+        // instructions a pixel).
+        let index = |v: i32| usize::try_from(v as u32).unwrap_or(usize::MAX);
+        let (y, x0, x1) = (index(span.y), index(span.x_start), index(span.x_end));
+        // Its own row only: a span past the row's last pixel (a caller
+        // breaking the sink's contract) is dropped, neither wrapped into the
+        // next row nor written into the row's padding bits. `y < H`, so `y *
+        // STRIDE + STRIDE <= N`: no overflow.
+        let row = (y < H && x1 <= W).then(|| y * Self::STRIDE);
+        if let Some(row) = row.and_then(|start| self.data.0.get_mut(start..start + Self::STRIDE)) {
+            F::fill_span(row, x0..x1, color);
         }
         Ok(())
     }
