@@ -457,15 +457,14 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
     fn fill_solid(&mut self, area: &Rectangle, color: F::Color) -> Result<(), Infallible> {
         if area.size.height == 1 {
             // One row, as `DrawTargetSink` sends spans: clipped as a span.
+            // The row's columns inside `0..W`: both ends lie within
+            // `i32::MIN..=W`, so they fit `i32` (`W <= i32::MAX`); the span
+            // sink drops the row if it is outside or empty.
             let (x, width) = (i64::from(area.top_left.x), i64::from(area.size.width));
             let x0 = x.max(0);
             let x1 = (x + width).min(i64::try_from(W).unwrap_or(i64::MAX));
             let y = area.top_left.y;
-            if let (true, Ok(x_start), Ok(x_end)) = (
-                usize::try_from(y).is_ok_and(|y| y < H) && x0 < x1,
-                i32::try_from(x0),
-                i32::try_from(x1),
-            ) {
+            if let (Ok(x_start), Ok(x_end)) = (i32::try_from(x0), i32::try_from(x1)) {
                 SpanSink::fill_span(self, Span { y, x_start, x_end }, color)?;
             }
             return Ok(());
