@@ -530,7 +530,14 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
         // breaking the sink's contract) is dropped, neither wrapped into the
         // next row nor written into the row's padding bits. `y < H`, so `y *
         // STRIDE + STRIDE <= N`: no overflow.
-        let row = (y < H && x1 <= W).then(|| y * Self::STRIDE);
+        // On 32-bit ARM the columns' order is tested here as well (the
+        // format's slice test rejects a reversed span either way): the byte
+        // offsets then cannot overflow and their sign test goes (Cortex-M4,
+        // `.ci/icount`: 16 px triangles 1,529 → 1,476 instructions, the
+        // built-in scene 610,426 → 601,066). On x86-64 the same test cost
+        // instructions (callgrind, small 1,229 → 1,266).
+        let ordered = !cfg!(target_arch = "arm") || x0 <= x1;
+        let row = (y < H && ordered && x1 <= W).then(|| y * Self::STRIDE);
         if let Some(row) = row.and_then(|start| self.data.0.get_mut(start..start + Self::STRIDE)) {
             F::fill_span(row, x0..x1, color);
         }
