@@ -520,16 +520,12 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
         // random triangles drawn by `draw_spans`, instructions counted by
         // callgrind: small 1,304 a triangle → 1,229, medium 4,287 → 3,998,
         // large 14,512 → 13,800 against `usize::try_from` with no test of
-        // `x1` against `W`; the same tests written with
-        // `u32::try_from(v).unwrap_or(u32::MAX)` took small 1,390. The
-        // Cortex-M4 gains too (`.ci/icount`: 240 px 1.48 → 1.42
-        // instructions a pixel).
+        // `x1` against `W` (the cast alone, without that test: small
+        // 1,266; `u32::try_from(v).unwrap_or(u32::MAX)` in its place: small
+        // 1,390). Cortex-M4 (`.ci/icount`): 240 px 1.48 → 1.42
+        // instructions a pixel.
         let index = |v: i32| usize::try_from(v as u32).unwrap_or(usize::MAX);
         let (y, x0, x1) = (index(span.y), index(span.x_start), index(span.x_end));
-        // Its own row only: a span past the row's last pixel (a caller
-        // breaking the sink's contract) is dropped, neither wrapped into the
-        // next row nor written into the row's padding bits. `y < H`, so `y *
-        // STRIDE + STRIDE <= N`: no overflow.
         // On 32-bit ARM the columns' order is tested here as well (the
         // format's slice test rejects a reversed span either way): the byte
         // offsets then cannot overflow and their sign test goes (Cortex-M4,
@@ -537,6 +533,10 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
         // built-in scene 610,426 → 601,066). On x86-64 the same test cost
         // instructions (callgrind, small 1,229 → 1,266).
         let ordered = !cfg!(target_arch = "arm") || x0 <= x1;
+        // Its own row only: a span past the row's last pixel (a caller
+        // breaking the sink's contract) is dropped, neither wrapped into the
+        // next row nor written into the row's padding bits. `y < H`, so `y *
+        // STRIDE + STRIDE <= N`: no overflow.
         let row = (y < H && ordered && x1 <= W).then(|| y * Self::STRIDE);
         if let Some(row) = row.and_then(|start| self.data.0.get_mut(start..start + Self::STRIDE)) {
             F::fill_span(row, x0..x1, color);
