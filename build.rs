@@ -11,6 +11,17 @@ fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed=memory.x");
     println!("cargo:rerun-if-changed=memory-32k.x");
+    // `unaligned_words`: the target's cores store 32-bit words at any
+    // address (ARMv7-M, ARMv7E-M and ARMv8-M Mainline; not ARMv6-M or
+    // ARMv8-M Baseline), which short framebuffer spans use.
+    println!("cargo::rustc-check-cfg=cfg(unaligned_words)");
+    let target = env::var("TARGET").unwrap_or_default();
+    if ["thumbv7m-", "thumbv7em-", "thumbv8m.main-"]
+        .iter()
+        .any(|arch| target.starts_with(arch))
+    {
+        println!("cargo:rustc-cfg=unaligned_words");
+    }
     let arm = env::var("CARGO_CFG_TARGET_ARCH").as_deref() == Ok("arm");
     let firmware = env::var_os("CARGO_FEATURE_FIRMWARE").is_some();
     // `firmware-32k`: the band firmware's map, 32 KiB of RAM in all.
