@@ -196,10 +196,10 @@ fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Option<&mut [u
 /// (black, white, any grey), and on 32-bit ARM only for 1-byte pixels.
 /// The `memset` there stores a word a loop step, where the word paths
 /// store eight (`strd`) or a few overlapping ones: spans and rectangles
-/// of black took up to 2.5x the instructions of a colour's (Cortex-M4,
+/// of black took up to 2.8x the instructions of a colour's (Cortex-M4,
 /// `.ci/icount` with black: the 240 px triangle 52,683 instructions
 /// through `memset`, 30,240 through the word path; 200 x 200 rectangles
-/// 1.67 instructions a pixel, 0.58 now, as any colour's).
+/// 1.67 instructions a pixel, 0.59 now, as any colour's).
 #[inline(always)]
 fn by_memset<const B: usize>(pixel: [u8; B]) -> bool {
     (B == 1 || !cfg!(target_arch = "arm")) && pixel.iter().all(|&b| b == pixel[0])
@@ -207,8 +207,8 @@ fn by_memset<const B: usize>(pixel: [u8; B]) -> bool {
 
 /// Fills `bytes`, whole pixels, with copies of `pixel`.
 ///
-/// One `memset` if [`by_memset`]. Otherwise, on 32-bit ARM and for spans of 16 pixels or more, the
-/// widest safe stores ([`fill_words`]): aligned 32-bit words of the
+/// One `memset` if [`by_memset`]. Otherwise, on 32-bit ARM and for spans
+/// of 16 pixels or more, the widest safe stores ([`fill_words`]): aligned 32-bit words of the
 /// repeating pattern, which the compiler turns into runs of `strd` on a
 /// Cortex-M4; shorter spans there are a plain pixel loop (the aligned
 /// word setup costs more than it saves), or on cores that store unaligned
@@ -300,17 +300,18 @@ fn fill_overlapping<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
 
 /// [`fill_bytes`] on a Cortex-M3, M4, M7 or M33 (the build script's
 /// `unaligned_words`: ARMv7-M and ARMv8-M Mainline cores store a 32-bit
-/// word at any address, unless a program sets the trap for it), for a
-/// span of 8 bytes to 16 pixels whose pixel size divides 4: 32-bit words
-/// at the span's start and back from its end, overlapping in the middle,
-/// four or eight of them for spans under 32 bytes (each starts a whole
-/// number of pixels in, so the pattern lines up). No loop and no test of the span's alignment: on a
-/// Cortex-M4 (`.ci/icount`), 16 px triangles took 1,349 instructions
-/// instead of 1,476 with the pixel loop, the mesh 1,728 instead of 1,914
-/// and the built-in scene 576,182 instead of 601,066, for 1,444 bytes
-/// more flash in the whole firmware (at "s"). Spans under 8 bytes keep
-/// the loop (4 px triangles: 679 with words from 4 bytes on, 667 so),
-/// and so does ARMv6-M, which has no unaligned stores.
+/// word at any address, unless a program sets the trap for it), for the
+/// spans of 8 bytes to 16 pixels of a pixel size that divides 4: 32-bit
+/// words at the span's start and back from its end, overlapping in the
+/// middle, four or eight of them for spans under 32 bytes (each starts a
+/// whole number of pixels in, so the pattern lines up); shorter spans
+/// as pixels. No loop and no test of the span's alignment: on a
+/// Cortex-M4 (`.ci/icount`, when it came), 16 px triangles 1,476
+/// instructions with the pixel loop → 1,349, the mesh 1,914 → 1,728, the
+/// built-in scene 601,066 → 576,187, for 1,476 bytes more flash in the
+/// whole firmware (at "s"). Spans under 8 bytes keep the loop: with words
+/// from 4 bytes on, 4 px triangles took 725 to 733 instructions (679 so).
+/// ARMv6-M, which has no unaligned stores, keeps the loop for all.
 #[inline(always)]
 fn fill_short_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     // The pixel repeated over a word: for 2-byte pixels the pixel's
@@ -338,10 +339,12 @@ fn fill_short_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
         for at in [0, 4, 8, 12, n - 16, n - 12, n - 8, n - 4] {
             put(at);
         }
-    } else {
+    } else if n >= 8 {
         for at in [0, 4, n - 8, n - 4] {
             put(at);
         }
+    } else {
+        bytes.as_chunks_mut::<B>().0.fill(pixel);
     }
 }
 
@@ -639,7 +642,7 @@ mod tests {
                         fill_overlapping(&mut got.0[offset + lo..offset + hi], pixel);
                         assert_eq!(want.0, got.0, "fill_overlapping {offset} {x0} {len}");
                     }
-                    if 4 % B == 0 && (8..16 * B).contains(&(hi - lo)) {
+                    if 4 % B == 0 && (B == 4 || hi - lo < 32) {
                         let mut got = Words([0; 640]);
                         fill_short_words(&mut got.0[offset + lo..offset + hi], pixel);
                         assert_eq!(want.0, got.0, "fill_short_words {offset} {x0} {len}");
