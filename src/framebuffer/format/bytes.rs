@@ -207,17 +207,20 @@ fn by_memset<const B: usize>(pixel: [u8; B]) -> bool {
 
 /// Fills `bytes`, whole pixels, with copies of `pixel`.
 ///
-/// One `memset` if [`by_memset`]. Otherwise, on 32-bit ARM and for spans
-/// of 16 pixels or more, the widest safe stores ([`fill_words`]): aligned 32-bit words of the
-/// repeating pattern, which the compiler turns into runs of `strd` on a
-/// Cortex-M4; shorter spans there are a plain pixel loop (the aligned
-/// word setup costs more than it saves), or on cores that store unaligned
-/// words, from 8 bytes on, a few overlapping words
-/// ([`fill_short_words`]). On other architectures, pixels of 2, 4 or 8
-/// bytes go as overlapping 16-byte blocks ([`fill_overlapping`]: no
-/// pixel-by-pixel tail, measured faster on x86-64 on spans of a few
-/// pixels to a few dozen), other sizes as the pixel loop, which the
-/// compiler vectorizes.
+/// One `memset` if [`by_memset`]. Otherwise:
+///
+/// - on a core that stores unaligned words (`unaligned_words`), for
+///   pixels whose size divides 4, a few overlapping words, around aligned
+///   runs of `strd` on long spans ([`fill_unaligned_words`]);
+/// - on other 32-bit ARM cores and for spans of 16 pixels or more, aligned
+///   32-bit words of the repeating pattern ([`fill_words`]), which the
+///   compiler turns into runs of `strd` on a Cortex-M4; shorter spans
+///   there are a plain pixel loop (the aligned word setup costs more than
+///   it saves);
+/// - on other architectures, pixels of 2, 4 or 8 bytes as overlapping
+///   16-byte blocks ([`fill_overlapping`]: no pixel-by-pixel tail,
+///   measured faster on x86-64 on spans of a few pixels to a few dozen),
+///   other sizes as the pixel loop, which the compiler vectorizes.
 #[inline(always)]
 fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     let Some(&first) = pixel.first() else { return };
@@ -225,14 +228,12 @@ fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
         bytes.fill(first);
     } else if !cfg!(target_arch = "arm") && 8 % B == 0 {
         fill_overlapping(bytes, pixel);
+    } else if cfg!(unaligned_words) && 4 % B == 0 {
+        fill_unaligned_words(bytes, pixel);
     } else if bytes.len() < 16 * B || !cfg!(target_arch = "arm") {
-        if cfg!(unaligned_words) && 4 % B == 0 && bytes.len() >= 8 {
-            fill_short_words(bytes, pixel);
-        } else {
-            // Whole pixels only: `bytes` is a span of them. Hosts vectorize
-            // this loop themselves, better than the word path below.
-            bytes.as_chunks_mut::<B>().0.fill(pixel);
-        }
+        // Whole pixels only: `bytes` is a span of them. Hosts vectorize
+        // this loop themselves, better than the word path below.
+        bytes.as_chunks_mut::<B>().0.fill(pixel);
     } else {
         fill_words(bytes, pixel);
     }
@@ -300,20 +301,26 @@ fn fill_overlapping<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
 
 /// [`fill_bytes`] on a Cortex-M3, M4, M7 or M33 (the build script's
 /// `unaligned_words`: ARMv7-M and ARMv8-M Mainline cores store a 32-bit
-/// word at any address, unless a program sets the trap for it), for the
-/// spans of 8 bytes to 16 pixels of a pixel size that divides 4: 32-bit
-/// words at the span's start and back from its end, overlapping in the
-/// middle, four or eight of them for spans under 32 bytes (each starts a
-/// whole number of pixels in, so the pattern lines up); shorter spans
-/// as pixels. No loop and no test of the span's alignment: on a
-/// Cortex-M4 (`.ci/icount`, when it came), 16 px triangles 1,476
-/// instructions with the pixel loop → 1,349, the mesh 1,914 → 1,728, the
-/// built-in scene 601,066 → 576,187, for 1,476 bytes more flash in the
-/// whole firmware (at "s"). Spans under 8 bytes keep the loop: with words
-/// from 4 bytes on, 4 px triangles took 725 to 733 instructions (679 so).
-/// ARMv6-M, which has no unaligned stores, keeps the loop for all.
+/// word at any address, unless a program sets the trap for it), for a
+/// pixel size that divides 4: spans under 8 bytes as pixels, shorter
+/// ones than 32 bytes as four or eight 32-bit words at the span's start
+/// and back from its end, overlapping in the middle (each starts a whole
+/// number of pixels in, so the pattern lines up), and longer ones as
+/// aligned blocks of eight words (runs of `strd`) between one word at
+/// the start and eight back from the end, which cover whatever the
+/// blocks leave at either end (under 4 bytes before the first block,
+/// under 32 after the last). No loop for short spans, and no head or
+/// tail loop for long ones.
+///
+/// On a Cortex-M4 (`.ci/icount`, when it came), the short spans' words
+/// took 16 px triangles from 1,476 instructions with the pixel loop to
+/// 1,349, the mesh from 1,914 to 1,728 and the built-in scene from
+/// 601,066 to 576,187, for 1,476 bytes more flash in the whole firmware
+/// (at "s"); with words from 4 bytes on, 4 px triangles took 725 to 733
+/// instructions (679 with the pixel loop under 8). ARMv6-M, which has no
+/// unaligned stores, keeps the pixel loop and [`fill_words`].
 #[inline(always)]
-fn fill_short_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
+fn fill_unaligned_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     // The pixel repeated over a word: for 2-byte pixels the pixel's
     // `u16` times 0x1_0001, one shifted `orr` on a Cortex-M (built byte by
     // byte, it took four instructions a span).
@@ -322,29 +329,42 @@ fn fill_short_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
         _ => core::array::from_fn(|i| pixel[i % B]),
     };
     let n = bytes.len();
-    // The word at byte `at` (a whole number of pixels into the span, so
-    // the pattern lines up), if it lies in the span.
+    if n < 8 {
+        bytes.as_chunks_mut::<B>().0.fill(pixel);
+        return;
+    }
+    if n >= 32 {
+        let (head, words, _) = bytemuck::pod_align_to_mut::<u8, u32>(bytes);
+        // The first aligned word is span byte `head.len()` on: the pattern
+        // turned by that many bytes (by whole pixels, in the framebuffer).
+        let turn = 8 * (head.len() as u32 % 4);
+        let aligned = match cfg!(target_endian = "little") {
+            true => u32::from_ne_bytes(word).rotate_right(turn),
+            false => u32::from_ne_bytes(word).rotate_left(turn),
+        };
+        for block in words.as_chunks_mut::<8>().0 {
+            *block = [aligned; 8];
+        }
+    }
+    // The word at byte `at`, if it lies in the span.
     let mut put = |at: usize| {
         if let Some(Ok(w)) = bytes.get_mut(at..at + 4).map(<&mut [u8; 4]>::try_from) {
             *w = word;
         }
     };
-    if B == 4 && n >= 32 {
-        // 4-byte pixels only (shorter spans under 16 pixels have
-        // under 32 bytes): every word in turn.
-        for w in bytes.as_chunks_mut::<4>().0 {
-            *w = word;
+    if n >= 32 {
+        put(0);
+        for at in [n - 32, n - 28, n - 24, n - 20, n - 16, n - 12, n - 8, n - 4] {
+            put(at);
         }
     } else if n >= 16 {
         for at in [0, 4, 8, 12, n - 16, n - 12, n - 8, n - 4] {
             put(at);
         }
-    } else if n >= 8 {
+    } else {
         for at in [0, 4, n - 8, n - 4] {
             put(at);
         }
-    } else {
-        bytes.as_chunks_mut::<B>().0.fill(pixel);
     }
 }
 
@@ -642,10 +662,10 @@ mod tests {
                         fill_overlapping(&mut got.0[offset + lo..offset + hi], pixel);
                         assert_eq!(want.0, got.0, "fill_overlapping {offset} {x0} {len}");
                     }
-                    if 4 % B == 0 && (B == 4 || hi - lo < 32) {
+                    if 4 % B == 0 {
                         let mut got = Words([0; 640]);
-                        fill_short_words(&mut got.0[offset + lo..offset + hi], pixel);
-                        assert_eq!(want.0, got.0, "fill_short_words {offset} {x0} {len}");
+                        fill_unaligned_words(&mut got.0[offset + lo..offset + hi], pixel);
+                        assert_eq!(want.0, got.0, "fill_unaligned_words {offset} {x0} {len}");
                     }
                     if len < 4 {
                         // Under the word paths' four pixels.
