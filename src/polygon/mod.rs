@@ -6,8 +6,9 @@
 //! table and active edge list live in `heapless` storage on the stack whose
 //! capacity `N` (vertices) the caller picks: a [`Polygon<N>`](Polygon) of
 //! more than `N` vertices cannot be made, so drawing never runs out of room.
-//! The storage is 60 bytes per vertex of capacity on a 32-bit target (a
-//! 56-byte edge record and a `usize` slot in the active list).
+//! The storage is at most 60 bytes per vertex of capacity on a 32-bit
+//! target (a 56-byte edge record for edges stepped in `i64`, 32 for those
+//! in `i32`, and a `usize` slot in the active list).
 //!
 //! Pixels follow the crate's sampling rule, as triangles do: a pixel is lit
 //! iff its centre nudged by `(e, e^2)` has a non-zero winding number

@@ -144,6 +144,14 @@ impl Frame {
         })
     }
 
+    /// Whether every vertex of the shape lies within `2^29` raw units of
+    /// the origin's centre: its relative coordinates fit `i32`
+    /// ([`relative`](Self::relative)), and its edges step exactly in it.
+    #[inline(always)]
+    pub(crate) fn fits_i32(&self) -> bool {
+        self.near
+    }
+
     /// `v` in raw units from the origin's centre, in `T` if both
     /// coordinates lie within its bound for exact stepping
     /// ([`Wide::difference`]; always for `i64`: `|x|, |y| < 2^32`).
