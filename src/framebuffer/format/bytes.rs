@@ -193,16 +193,22 @@ fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Option<&mut [u
 }
 
 /// Whether spans of `pixel` go as one `memset`: if all its bytes are equal
-/// (black, white, any grey), and on 32-bit ARM only for 1-byte pixels.
-/// The `memset` there stores a word a loop step, where the word paths
-/// store eight (`strd`) or a few overlapping ones: spans and rectangles
-/// of black took up to 2.8x the instructions of a colour's (Cortex-M4,
-/// `.ci/icount` with black: the 240 px triangle 52,683 instructions
-/// through `memset`, 30,240 through the word path; 200 x 200 rectangles
-/// 1.67 instructions a pixel, 0.59 now, as any colour's).
+/// (black, white, any grey), and on 32-bit ARM not for pixels of 2 or 4
+/// bytes. The `memset` there stores a word a loop step, where the word
+/// paths store eight (`strd`) or a few overlapping ones: spans and
+/// rectangles of black took up to 2.8x the instructions of a colour's
+/// (Cortex-M4, `.ci/icount` with black: the 240 px triangle 52,683
+/// instructions through `memset`, 30,240 through the word path; 200 x 200
+/// rectangles 1.67 instructions a pixel, 0.59 now, as any colour's). The
+/// ARMv6-M build, counted on QEMU's Cortex-M3 board, gains too on all but
+/// mid-sized triangles (in black: 240 px 60,414 → 49,640 instructions,
+/// rectangles 200 x 200 67,581 → 34,428, but 64 px triangles 158,942 →
+/// 168,347 for the batch of 15). Pixels of 3 bytes keep `memset` there:
+/// their word path was not measured against it.
 #[inline(always)]
 fn by_memset<const B: usize>(pixel: [u8; B]) -> bool {
-    (B == 1 || !cfg!(target_arch = "arm")) && pixel.iter().all(|&b| b == pixel[0])
+    let words_faster = cfg!(target_arch = "arm") && B > 1 && 4 % B == 0;
+    !words_faster && pixel.iter().all(|&b| b == pixel[0])
 }
 
 /// Fills `bytes`, whole pixels, with copies of `pixel`.
