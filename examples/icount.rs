@@ -509,6 +509,34 @@ mod target {
         let batch = Batch::Polygons(&[(&pentagram, FillRule::EvenOdd)]);
         let label = "pentagram 220 px, even-odd";
         row(&mut counter, FB, RECTS, "polygons", label, batch, false);
+        // Random octagons, often concave: corners in 8 directions at a
+        // random 6 to 20 px from the centre, each moved by up to 2 px, at
+        // fractional (1/4096 px) positions.
+        let mut rng = builtin_scene::Rng::new(0x9E37_79B9);
+        let mut octagons = [[Vertex::default(); 8]; 16];
+        const DIRECTIONS: [(i32, i32); 8] = [
+            (10, 0),
+            (7, 7),
+            (0, 10),
+            (-7, 7),
+            (-10, 0),
+            (-7, -7),
+            (0, -10),
+            (7, -7),
+        ];
+        for (k, o) in octagons.iter_mut().enumerate() {
+            let k = k as i32;
+            let centre = ((24 + 40 * (k % 8)) * 4096, (40 + 80 * (k / 8)) * 4096);
+            for (v, (dx, dy)) in o.iter_mut().zip(DIRECTIONS) {
+                let r = 13 * 4096 + rng.signed(7 * 4096);
+                let (jx, jy) = (rng.signed(2 * 4096), rng.signed(2 * 4096));
+                *v = Vertex::from_raw(centre.0 + dx * r / 10 + jx, centre.1 + dy * r / 10 + jy);
+            }
+        }
+        let octagons = octagons.each_ref().map(|o| (&o[..], FillRule::NonZero));
+        let batch = Batch::Polygons(&octagons);
+        let label = "random octagons, about 26 px";
+        row(&mut counter, FB, RECTS, "polygons", label, batch, false);
 
         // The built-in scene from a display list: the whole frame, then
         // bands of 16 and 8 rows (the finished bands go nowhere).
