@@ -80,11 +80,14 @@ fn scan<T: Narrow, const N: usize, E>(
     rule: FillRule,
     mut emit: impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
-    let frame = *frame;
+    // A copy of its own, which no store through `emit` can alias: read
+    // through the reference instead, the Cortex-M4 took 5,854
+    // instructions an 18 px hexagon rather than 5,808 (`.ci/icount`).
+    let frame = &{ *frame };
     let mut edges: Vec<Directed<T>, N> = Vec::new();
     for (k, &from) in vertices.iter().enumerate() {
         let to = vertices[(k + 1) % vertices.len()];
-        if let Some(e) = Directed::new(&frame, from, to) {
+        if let Some(e) = Directed::new(frame, from, to) {
             // Cannot fail: at most one edge per vertex.
             if edges.push(e).is_err() {
                 return Ok(());
@@ -114,7 +117,7 @@ fn scan<T: Narrow, const N: usize, E>(
             continue;
         }
         sort_by_crossing(&mut active, &edges);
-        emit_row(row, &active, &edges, rule, &frame, &mut emit)?;
+        emit_row(row, &active, &edges, rule, frame, &mut emit)?;
         active.retain(|&k| edges[k].edge.last_row > row);
         for &k in active.iter() {
             edges[k].edge.step();
