@@ -9,7 +9,11 @@
 //! 1. the setup of a 16 px triangle: `for_each_span` stopped at its first
 //!    span, as `.ci/icount` measures it;
 //! 2. the same triangle drawn through the framebuffer's span sink;
-//! 3. a 64 px triangle, the same way.
+//! 3. a 64 px triangle, the same way;
+//! 4. a line 3 px wide and 100 px long (`.ci/icount`'s first "3 px
+//!    wide" line): its corners, then its rows;
+//! 5. an 18 px hexagon (`.ci/icount`'s hexagons): the convexity test and
+//!    the two chains of edges.
 //!
 //! Built for the host, it does nothing.
 
@@ -66,6 +70,19 @@ mod target {
         // them with a `memmove` inside the window.
         draw(&small, FB);
         draw(&irregular(64, 64, 64), FB);
+        let line = super::builtin_scene::star_line(1, 100)
+            .stroke(Rgb565::RED)
+            .stroke_width(3);
+        begin();
+        let Ok(()) = black_box(&line).draw_spans(black_box(FB));
+        end();
+        let hex = super::builtin_scene::hexagon((100, 100), 9);
+        let poly = embedded_raster::Polygon::<12>::new(&hex)
+            .unwrap()
+            .fill(Rgb565::RED);
+        begin();
+        let Ok(()) = black_box(&poly).draw_spans(black_box(FB));
+        end();
         super::semihosting::exit_success()
     }
 }

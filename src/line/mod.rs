@@ -70,6 +70,7 @@ use embedded_graphics_core::{
 };
 
 use crate::{
+    polygon::convex::parallelogram_spans,
     raster::sink::{drawable_through_spans, SpanDrawable, SpanSink},
     span::Span,
 };
@@ -760,10 +761,10 @@ fn draw_segment<C: PixelColor, S: SpanSink<C>>(
     match width {
         0 => Ok(()),
         1 => source.draw_thin(&line, skip_end, color, sink),
-        w => match thick::triangles(line.start, line.end, w, &clip) {
-            Some(tris) => tris
-                .iter()
-                .try_for_each(|t| t.for_each_span(&clip, |s| sink.fill_span(s, color))),
+        w => match thick::corners(line.start, line.end, w, &clip) {
+            Some(corners) => {
+                parallelogram_spans(&corners, &clip, &mut |s| sink.fill_span(s, color))
+            }
             None => Ok(()),
         },
     }

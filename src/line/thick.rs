@@ -11,8 +11,10 @@
 //! ```
 //!
 //! rounded to the nearest 1/4096 px (exactly, in integers: `u128::isqrt`),
-//! and it is filled as two [`Triangle`]s sharing the diagonal, under the
-//! crate's sampling rule. A zero-length thick line is the `w x w` square
+//! and it is filled as a convex polygon under the crate's sampling rule:
+//! two chains of edges from its top corner to its bottom one, one span a
+//! row (the two triangles sharing its diagonal light the same pixels, in
+//! two spans a row). A zero-length thick line is the `w x w` square
 //! around its pixel's centre.
 //!
 //! Corners must be [`Vertex`]es. When one would leave the 20.12 range, the
@@ -25,21 +27,20 @@
 
 use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 
-use crate::{
-    clip::Bounds, raster::wide::div_sqrt, triangle::Triangle, vertex::Vertex, vertex::ONE,
-};
+use crate::{clip::Bounds, raster::wide::div_sqrt, vertex::Vertex, vertex::ONE};
 
 /// Widths above this are drawn as this width.
 pub(crate) const MAX_WIDTH: u32 = 65535;
 
-/// The two triangles of the thick line, or `None` if nothing of it can be
-/// visible in `clip`.
-pub(crate) fn triangles(
+/// The corners of the thick line, in order round it (a parallelogram:
+/// `c[0] + c[2] = c[1] + c[3]`), or `None` if nothing of it can be visible
+/// in `clip`.
+pub(crate) fn corners(
     start: Point,
     end: Point,
     width: u32,
     clip: &Rectangle,
-) -> Option<[Triangle; 2]> {
+) -> Option<[Vertex; 4]> {
     let w = i128::from(width.min(MAX_WIDTH));
     let centre = |p: Point| (i128::from(p.x) * 4096 + 2048, i128::from(p.y) * 4096 + 2048);
     let (mut p0, mut p1) = (centre(start), centre(end));
@@ -83,11 +84,7 @@ pub(crate) fn triangles(
     let [Some(a), Some(b), Some(c), Some(d)] = v else {
         return None;
     };
-    let v = [a, b, c, d];
-    Some([
-        Triangle::new(v[0], v[1], v[2]),
-        Triangle::new(v[0], v[2], v[3]),
-    ])
+    Some([a, b, c, d])
 }
 
 /// The part of the centre line `p0 -> p1` (raw units) inside `clip` grown

@@ -14,6 +14,7 @@
 //! iff its centre nudged by `(e, e^2)` has a non-zero winding number
 //! ([`FillRule::NonZero`]) or an odd one ([`FillRule::EvenOdd`]).
 
+pub(crate) mod convex;
 mod predicates;
 mod scanline;
 mod triangulate;

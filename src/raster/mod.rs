@@ -7,9 +7,12 @@
 //!   relative to them.
 //! - [`edge`]: the exact incremental edge, the threshold column where an
 //!   edge crosses each row, stepped in O(1) per row without division.
+//! - [`walk`]: the rows between a left and a right edge, for every shape
+//!   whose rows two edges cross (triangles, convex polygons).
 //! - [`sink`]: where spans go; only sinks touch pixels.
 
 pub(crate) mod edge;
 pub(crate) mod frame;
 pub(crate) mod sink;
+pub(crate) mod walk;
 pub(crate) mod wide;

@@ -1,0 +1,157 @@
+//! Convex polygons as two chains of edges, walked like a triangle.
+//!
+//! A convex polygon's outline runs from its top vertex down to its bottom
+//! one along two chains, one on each side, and every row sample line
+//! between them crosses each chain exactly once: a row's span runs from
+//! the left chain's threshold to the right chain's, as a triangle's does
+//! between its long and its short edge. So a convex polygon needs no edge
+//! table, no sort and no winding: two active edges at a time, each
+//! stepped in O(1) a row and handed over to the next edge of its chain at
+//! a vertex ([`walk_chains`]). The pixels are the scanline fill's, under
+//! either rule (the polygon winds once, so both fill its inside); only
+//! the work differs.
+//!
+//! Whether a polygon is convex is decided exactly on its coordinates
+//! relative to its frame, in the edges' own width ([`convex_turn`]): a
+//! polygon that is not (concave, self-intersecting, with a repeated
+//! vertex or a fold-back) gets `None` and takes the edge table.
+
+use embedded_graphics_core::primitives::Rectangle;
+use heapless::Vec;
+
+use super::predicates::convex_turn;
+use crate::{
+    raster::{
+        edge::Edge,
+        frame::Frame,
+        walk::{by_numbers_ref, walk_chains},
+        wide::{orientation, Narrow, Wide},
+    },
+    span::Span,
+    vertex::Vertex,
+};
+
+/// Calls `emit` with the spans of the polygon `vertices` (at most `N`)
+/// inside `clip`, top to bottom, if it is convex; `None`, with nothing
+/// emitted, if it is not.
+pub(crate) fn convex_spans<const N: usize, E>(
+    vertices: &[Vertex],
+    clip: &Rectangle,
+    emit: &mut impl FnMut(Span) -> Result<(), E>,
+) -> Option<Result<(), E>> {
+    let Some(frame) = Frame::around(vertices, clip) else {
+        // Convex or not, nothing of it is inside the clip.
+        return Some(Ok(()));
+    };
+    let emit = &mut by_numbers_ref(emit);
+    match frame.fits_i32() {
+        true => walk_convex::<i32, N, E>(&frame, vertices, Shape::Polygon, emit),
+        false => walk_convex::<i64, N, E>(&frame, vertices, Shape::Polygon, emit),
+    }
+}
+
+/// Calls `emit` with the spans of the parallelogram `corners` (in order
+/// round it, `corners[0] + corners[2] = corners[1] + corners[3]`: convex
+/// whatever its size) inside `clip`, top to bottom. A thick line's
+/// rectangle: its rows are one span each, where its two triangles gave two.
+pub(crate) fn parallelogram_spans<E>(
+    corners: &[Vertex; 4],
+    clip: &Rectangle,
+    emit: &mut impl FnMut(Span) -> Result<(), E>,
+) -> Result<(), E> {
+    let Some(frame) = Frame::around(corners, clip) else {
+        return Ok(());
+    };
+    let emit = &mut by_numbers_ref(emit);
+    let done = match frame.fits_i32() {
+        true => walk_convex::<i32, 4, E>(&frame, corners, Shape::Parallelogram, emit),
+        false => walk_convex::<i64, 4, E>(&frame, corners, Shape::Parallelogram, emit),
+    };
+    // Cannot be `None`: the corners fit the frame's width.
+    done.unwrap_or(Ok(()))
+}
+
+/// What [`walk_convex`] knows of its polygon.
+#[derive(Clone, Copy)]
+enum Shape {
+    /// Nothing: it may not be convex.
+    Polygon,
+    /// A parallelogram, so convex (or of no area).
+    Parallelogram,
+}
+
+/// [`convex_spans`] in `T`, for a frame whose relative coordinates fit
+/// it: `None` if the polygon is not convex (never for a parallelogram).
+fn walk_convex<T: Narrow, const N: usize, E>(
+    frame: &Frame,
+    vertices: &[Vertex],
+    shape: Shape,
+    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
+) -> Option<Result<(), E>> {
+    let mut p: Vec<(T, T), N> = Vec::new();
+    for &v in vertices {
+        p.push(frame.relative::<T>(v)?).ok()?;
+    }
+    let clockwise = match (shape, p.as_slice()) {
+        (Shape::Polygon, _) => convex_turn(p.len(), |k| p[k])?,
+        // Coordinates within the bound: the orientation is exact. Of no
+        // area, it lights nothing.
+        (Shape::Parallelogram, &[a, b, c, _]) => match orientation(a, b, c) {
+            t if t == T::Double::ZERO => return Some(Ok(())),
+            t => t > T::Double::ZERO,
+        },
+        (Shape::Parallelogram, _) => return None,
+    };
+    // The first vertex at the least y: both chains start there.
+    let top = (0..p.len()).min_by_key(|&k| p[k].1)?;
+    let chain = |forwards| Chain {
+        p: &p,
+        at: top,
+        left: p.len(),
+        forwards,
+    };
+    // Clockwise on screen, the forward chain runs down the right side.
+    Some(match clockwise {
+        true => walk_chains(frame, chain(false), chain(true), emit),
+        false => walk_chains(frame, chain(true), chain(false), emit),
+    })
+}
+
+/// The edges of a convex polygon's chain, top to bottom: from vertex `at`
+/// forwards (`at`, `at + 1`, ...) or backwards, while the outline goes down
+/// or stays level, leaving out the edges that cross no row of the frame.
+struct Chain<'a, T> {
+    p: &'a [(T, T)],
+    at: usize,
+    /// Edges not yet looked at: the chain ends after all of them at most.
+    left: usize,
+    forwards: bool,
+}
+
+impl<T: Narrow> Iterator for Chain<'_, T> {
+    type Item = Edge<T>;
+
+    fn next(&mut self) -> Option<Edge<T>> {
+        let n = self.p.len();
+        while self.left > 0 {
+            self.left -= 1;
+            let next = match self.forwards {
+                true if self.at + 1 == n => 0,
+                true => self.at + 1,
+                false if self.at == 0 => n - 1,
+                false => self.at - 1,
+            };
+            let (a, b) = (*self.p.get(self.at)?, *self.p.get(next)?);
+            self.at = next;
+            if b.1 < a.1 {
+                // Past the bottom vertex.
+                self.left = 0;
+            } else if a.1 < b.1 {
+                if let Some(edge) = Edge::new(a, b, 0) {
+                    return Some(edge);
+                }
+            }
+        }
+        None
+    }
+}
