@@ -1,4 +1,4 @@
-//! Firmware for `.ci/itrace`: a few triangles drawn between two marker
+//! Firmware for `.ci/itrace`: a few shapes drawn between two marker
 //! calls, for an instruction-by-instruction trace under QEMU. The script
 //! counts the instructions run between each `begin` and the next `end`,
 //! in all and per function: where a triangle's setup and rows go on a
@@ -10,8 +10,8 @@
 //!    span, as `.ci/icount` measures it;
 //! 2. the same triangle drawn through the framebuffer's span sink;
 //! 3. a 64 px triangle, the same way;
-//! 4. a line 3 px wide and 100 px long (`.ci/icount`'s first "3 px
-//!    wide" line): its corners, then its rows;
+//! 4. a line 3 px wide and 100 px long at a slope of 1/2 (the second of
+//!    `.ci/icount`'s "3 px wide" lines): its corners, then its rows;
 //! 5. an 18 px hexagon (`.ci/icount`'s hexagons): the convexity test and
 //!    the two chains of edges.
 //!

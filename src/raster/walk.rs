@@ -79,15 +79,21 @@ pub(crate) fn emit_columns<E>(
 
 /// Emits rows `from..=end` between `left` and `right`, both positioned on
 /// row `from`; leaves both on `end` (never steps past it, so values stay
-/// within the edges' bounds). One copy per width: the side is data here,
-/// not a type, and the loop does not depend on it.
+/// within the edges' bounds). The side is data here, not a type, and the
+/// loop does not depend on it.
 ///
-/// Never inlined: the loop then has its own registers for the edges and
-/// the sink. Left to the compiler, it was inlined into the one-shot walk
-/// once the band walk also called it, and the flat-triangle rows of
-/// `.ci/icount` took 8 % more instructions on a Cortex-M4 (240 px: 1.54
-/// instructions a pixel against 1.49 then).
-#[inline(never)]
+/// Always inlined, into one out-of-line function per shape, defined in
+/// the shape's own module (`triangle_rows`, `chain_rows`): out of line,
+/// the loop has its own registers for the edges and the sink (left to the
+/// compiler, it was inlined into the one-shot triangle walk once the band
+/// walk also called it, and the flat-triangle rows of `.ci/icount` took
+/// 8 % more instructions on a Cortex-M4: 240 px 1.54 instructions a pixel
+/// against 1.49 then). In the caller's module, the out-of-line copy lands
+/// in the caller's codegen unit, where the compiler can fit the call to
+/// it: called from another module's copy, a 16 px triangle took 1,286
+/// instructions instead of 1,250 (`.ci/icount`), the same code compiled
+/// into other registers.
+#[inline(always)]
 pub(crate) fn rows<T: Narrow, E>(
     frame: &Frame,
     left: &mut Edge<T>,
@@ -149,7 +155,7 @@ pub(crate) fn walk_chains<T: Narrow, E>(
     }
     loop {
         let end = l.last_row.min(r.last_row).min(last);
-        rows(frame, &mut l, &mut r, row, end, emit)?;
+        chain_rows(frame, &mut l, &mut r, row, end, emit)?;
         if end >= last {
             return Ok(());
         }
@@ -158,6 +164,19 @@ pub(crate) fn walk_chains<T: Narrow, E>(
             return Ok(());
         }
     }
+}
+
+/// [`rows`] out of line, for [`walk_chains`].
+#[inline(never)]
+fn chain_rows<T: Narrow, E>(
+    frame: &Frame,
+    left: &mut Edge<T>,
+    right: &mut Edge<T>,
+    from: i32,
+    end: i32,
+    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
+) -> Result<(), E> {
+    rows(frame, left, right, from, end, emit)
 }
 
 /// Moves `edge`, positioned on row `end`, on to the next row: to the next

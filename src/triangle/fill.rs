@@ -185,8 +185,8 @@ impl TriangleRows {
                 return Ok(false);
             }
             match self.short_left {
-                true => rows(frame, short, &mut self.long, from, end, emit)?,
-                false => rows(frame, &mut self.long, short, from, end, emit)?,
+                true => triangle_rows(frame, short, &mut self.long, from, end, emit)?,
+                false => triangle_rows(frame, &mut self.long, short, from, end, emit)?,
             }
             self.row = end + 1;
             if end < half_end {
@@ -375,8 +375,8 @@ fn walk<T: Narrow, E>(
     let mut half = |short: &mut Edge<T>, long: &mut Edge<T>| {
         let (from, end) = (short.first_row, short.last_row.min(last));
         match short_left {
-            true => rows(frame, short, long, from, end, emit),
-            false => rows(frame, long, short, from, end, emit),
+            true => triangle_rows(frame, short, long, from, end, emit),
+            false => triangle_rows(frame, long, short, from, end, emit),
         }
         .map(|()| end)
     };
@@ -390,6 +390,20 @@ fn walk<T: Narrow, E>(
         half(lower, long)?;
     }
     Ok(())
+}
+
+/// [`rows`] out of line, for the triangle walks (see [`rows`] for why it
+/// is defined here).
+#[inline(never)]
+fn triangle_rows<T: Narrow, E>(
+    frame: &Frame,
+    left: &mut Edge<T>,
+    right: &mut Edge<T>,
+    from: i32,
+    end: i32,
+    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
+) -> Result<(), E> {
+    rows(frame, left, right, from, end, emit)
 }
 
 #[cfg(test)]
