@@ -70,9 +70,10 @@ use embedded_graphics_core::{
 };
 
 use crate::{
-    polygon::convex::parallelogram_spans,
+    polygon::convex::{fill_convex, Shape},
     raster::sink::{drawable_through_spans, SpanDrawable, SpanSink},
     span::Span,
+    triangle::Triangle,
 };
 use clip::Canonical;
 
@@ -762,9 +763,15 @@ fn draw_segment<C: PixelColor, S: SpanSink<C>>(
         0 => Ok(()),
         1 => source.draw_thin(&line, skip_end, color, sink),
         w => match thick::corners(line.start, line.end, w, &clip) {
-            Some(corners) => {
-                parallelogram_spans(&corners, &clip, &mut |s| sink.fill_span(s, color))
-            }
+            Some(c) => match fill_convex(&c, Shape::Parallelogram, sink, color) {
+                Some(done) => done,
+                // Over 131,072 px a side: the two triangles sharing its
+                // diagonal, which light the same pixels, in 64 bits (the
+                // triangles' own copy for the sink).
+                None => [[c[0], c[1], c[2]], [c[0], c[2], c[3]]]
+                    .into_iter()
+                    .try_for_each(|[a, b, d]| Triangle::new(a, b, d).fill(color).draw_spans(sink)),
+            },
             None => Ok(()),
         },
     }

@@ -24,81 +24,87 @@ use crate::{
     raster::{
         edge::Edge,
         frame::Frame,
+        sink::SpanSink,
         walk::{by_numbers_ref, walk_chains},
-        wide::{orientation, Narrow, Wide},
+        wide::{orientation, Narrow},
     },
     span::Span,
     vertex::Vertex,
 };
 
-/// Calls `emit` with the spans of the polygon `vertices` (at most `N`)
-/// inside `clip`, top to bottom, if it is convex; `None`, with nothing
-/// emitted, if it is not.
-pub(crate) fn convex_spans<const N: usize, E>(
+/// The most vertices a polygon may have to be walked as convex; those
+/// with more take the edge table, convex or not.
+pub(crate) const MAX_VERTICES: usize = 32;
+
+/// What the convex walk knows of its polygon.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Shape {
+    /// Nothing: it may not be convex.
+    Polygon,
+    /// It is a parallelogram (its corners in order round it, `c[0] + c[2]
+    /// = c[1] + c[3]`), so convex, or of no area: a thick line's
+    /// rectangle, whose rows are one span each, where its two triangles
+    /// gave two.
+    Parallelogram,
+}
+
+/// Fills the polygon `vertices` with `color` in `sink` if it is convex;
+/// `None`, with nothing drawn, if it is not (or has more than
+/// [`MAX_VERTICES`]). One copy per sink for every convex shape.
+pub(crate) fn fill_convex<C: Copy, S: SpanSink<C>>(
     vertices: &[Vertex],
+    shape: Shape,
+    sink: &mut S,
+    color: C,
+) -> Option<Result<(), S::Error>> {
+    let clip = sink.bounds();
+    convex_spans(vertices, shape, &clip, &mut |s| sink.fill_span(s, color))
+}
+
+/// Calls `emit` with the spans of the polygon `vertices` inside `clip`,
+/// top to bottom, if it is convex; `None`, with nothing emitted, if it is
+/// not (or has more than [`MAX_VERTICES`]).
+pub(crate) fn convex_spans<E>(
+    vertices: &[Vertex],
+    shape: Shape,
     clip: &Rectangle,
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Option<Result<(), E>> {
+    if vertices.len() > MAX_VERTICES {
+        return None;
+    }
     let Some(frame) = Frame::around(vertices, clip) else {
         // Convex or not, nothing of it is inside the clip.
         return Some(Ok(()));
     };
-    let emit = &mut by_numbers_ref(emit);
-    match frame.fits_i32() {
-        true => walk_convex::<i32, N, E>(&frame, vertices, Shape::Polygon, emit),
-        false => walk_convex::<i64, N, E>(&frame, vertices, Shape::Polygon, emit),
+    // A polygon reaching 2^29 raw units (131,072 px) from its frame's
+    // origin takes the edge table or the triangles, which step in `i64`
+    // too: this walk has one width, one copy per sink.
+    if !frame.fits_i32() {
+        return None;
     }
+    walk_convex(&frame, vertices, shape, &mut by_numbers_ref(emit))
 }
 
-/// Calls `emit` with the spans of the parallelogram `corners` (in order
-/// round it, `corners[0] + corners[2] = corners[1] + corners[3]`: convex
-/// whatever its size) inside `clip`, top to bottom. A thick line's
-/// rectangle: its rows are one span each, where its two triangles gave two.
-pub(crate) fn parallelogram_spans<E>(
-    corners: &[Vertex; 4],
-    clip: &Rectangle,
-    emit: &mut impl FnMut(Span) -> Result<(), E>,
-) -> Result<(), E> {
-    let Some(frame) = Frame::around(corners, clip) else {
-        return Ok(());
-    };
-    let emit = &mut by_numbers_ref(emit);
-    let done = match frame.fits_i32() {
-        true => walk_convex::<i32, 4, E>(&frame, corners, Shape::Parallelogram, emit),
-        false => walk_convex::<i64, 4, E>(&frame, corners, Shape::Parallelogram, emit),
-    };
-    // Cannot be `None`: the corners fit the frame's width.
-    done.unwrap_or(Ok(()))
-}
-
-/// What [`walk_convex`] knows of its polygon.
-#[derive(Clone, Copy)]
-enum Shape {
-    /// Nothing: it may not be convex.
-    Polygon,
-    /// A parallelogram, so convex (or of no area).
-    Parallelogram,
-}
-
-/// [`convex_spans`] in `T`, for a frame whose relative coordinates fit
+/// [`convex_spans`] in `i32`, for a frame whose relative coordinates fit
 /// it: `None` if the polygon is not convex (never for a parallelogram).
-fn walk_convex<T: Narrow, const N: usize, E>(
+fn walk_convex<E>(
     frame: &Frame,
     vertices: &[Vertex],
     shape: Shape,
     emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
 ) -> Option<Result<(), E>> {
-    let mut p: Vec<(T, T), N> = Vec::new();
+    let mut p: Vec<(i32, i32), MAX_VERTICES> = Vec::new();
     for &v in vertices {
-        p.push(frame.relative::<T>(v)?).ok()?;
+        p.push(frame.relative::<i32>(v)?).ok()?;
     }
     let clockwise = match (shape, p.as_slice()) {
         (Shape::Polygon, _) => convex_turn(p.len(), |k| p[k])?,
         // Coordinates within the bound: the orientation is exact. Of no
         // area, it lights nothing.
         (Shape::Parallelogram, &[a, b, c, _]) => match orientation(a, b, c) {
-            t if t == T::Double::ZERO => return Some(Ok(())),
-            t => t > T::Double::ZERO,
+            0 => return Some(Ok(())),
+            t => t > 0,
         },
         (Shape::Parallelogram, _) => return None,
     };

@@ -35,6 +35,7 @@ use crate::{
     triangle::Triangle,
     vertex::Vertex,
 };
+use convex::{fill_convex, Shape};
 
 /// Which pixels inside a self-overlapping outline are filled.
 ///
@@ -264,7 +265,11 @@ impl<'a, const N: usize> Polygon<'a, N> {
         clip: &Rectangle,
         f: impl FnMut(Span) -> Result<(), E>,
     ) -> Result<(), E> {
-        scanline::polygon_spans::<N, E>(self.vertices, rule, clip, f)
+        let mut f = f;
+        match convex::convex_spans(self.vertices, Shape::Polygon, clip, &mut f) {
+            Some(done) => done,
+            None => scanline::polygon_spans::<N, E>(self.vertices, rule, clip, f),
+        }
     }
 
     /// Cuts the polygon into triangles and calls `f` with each: a fan for a
@@ -436,8 +441,12 @@ impl<C: PixelColor, const N: usize> SpanDrawable for FilledPolygon<'_, C, N> {
                 self.color,
             );
         }
-        self.polygon
-            .for_each_span(self.rule, &clip, |span| sink.fill_span(span, self.color))
+        if let Some(done) = fill_convex(self.polygon.vertices, Shape::Polygon, sink, self.color) {
+            return done;
+        }
+        scanline::polygon_spans::<N, _>(self.polygon.vertices, self.rule, &clip, |span| {
+            sink.fill_span(span, self.color)
+        })
     }
 }
 

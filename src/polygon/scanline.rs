@@ -27,7 +27,7 @@ use crate::{
     vertex::Vertex,
 };
 
-use super::{convex::convex_spans, FillRule};
+use super::FillRule;
 
 /// An edge of the polygon with its direction, stepped in `T`.
 #[derive(Debug, Clone, Copy)]
@@ -59,11 +59,8 @@ pub(crate) fn polygon_spans<const N: usize, E>(
     vertices: &[Vertex],
     rule: FillRule,
     clip: &Rectangle,
-    mut emit: impl FnMut(Span) -> Result<(), E>,
+    emit: impl FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
-    if let Some(done) = convex_spans::<N, E>(vertices, clip, &mut emit) {
-        return done;
-    }
     let Some(frame) = Frame::around(vertices, clip) else {
         return Ok(());
     };
