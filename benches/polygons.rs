@@ -1,7 +1,8 @@
-//! Filled polygons on a 320 x 240 Rgb565 framebuffer: the active edge
-//! table beside triangulating and filling the triangles (per draw, and with
-//! the triangles computed once), and tiny-skia's non-anti-aliased
-//! `fill_path` on its own RGBA pixmap.
+//! Filled polygons on a 320 x 240 Rgb565 framebuffer: the crate's fill
+//! (`Polygon::fill(..).draw(..)`: convex polygons as two chains of edges,
+//! the others by the active edge table) beside triangulating and filling
+//! the triangles (per draw, and with the triangles computed once), and
+//! tiny-skia's non-anti-aliased `fill_path` on its own RGBA pixmap.
 //!
 //! `cargo bench --bench polygons`; `benches/report.py polygons` prints the
 //! table in BENCHMARKS.md.
@@ -105,7 +106,7 @@ fn bench_set(c: &mut Criterion, set: &Set) {
     g.throughput(Throughput::Elements(pixels));
     let mut fb = Box::new(Fb::new());
 
-    g.bench_function("active edge table", |b| {
+    g.bench_function("fill", |b| {
         b.iter(|| {
             for p in &polys {
                 Polygon::<CAP>::new(p)

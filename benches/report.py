@@ -33,7 +33,7 @@ SUITES = {
     "polygons": (
         ["hexagons 18 px (x60)", "convex 24-gon 200 px", "concave star 24 vertices 200 px",
          "pentagram 200 px (self-intersecting)"],
-        ["active edge table", "triangulate and fill", "fill triangulated once", "tiny-skia"],
+        ["fill", "triangulate and fill", "fill triangulated once", "tiny-skia"],
         ["triangulate and fill", "fill triangulated once", "tiny-skia"],
         "set",
     ),

@@ -17,7 +17,6 @@
 //! vertex or a fold-back) gets `None` and takes the edge table.
 
 use embedded_graphics_core::primitives::Rectangle;
-use heapless::Vec;
 
 use super::predicates::convex_turn;
 use crate::{
@@ -26,15 +25,11 @@ use crate::{
         frame::Frame,
         sink::SpanSink,
         walk::{by_numbers_ref, walk_chains},
-        wide::{orientation, Narrow},
+        wide::orientation,
     },
     span::Span,
     vertex::Vertex,
 };
-
-/// The most vertices a polygon may have to be walked as convex; those
-/// with more take the edge table, convex or not.
-pub(crate) const MAX_VERTICES: usize = 32;
 
 /// What the convex walk knows of its polygon.
 #[derive(Debug, Clone, Copy)]
@@ -49,8 +44,8 @@ pub(crate) enum Shape {
 }
 
 /// Fills the polygon `vertices` with `color` in `sink` if it is convex;
-/// `None`, with nothing drawn, if it is not (or has more than
-/// [`MAX_VERTICES`]). One copy per sink for every convex shape.
+/// `None`, with nothing drawn, if it is not. One copy per sink for every
+/// convex shape.
 pub(crate) fn fill_convex<C: Copy, S: SpanSink<C>>(
     vertices: &[Vertex],
     shape: Shape,
@@ -63,16 +58,13 @@ pub(crate) fn fill_convex<C: Copy, S: SpanSink<C>>(
 
 /// Calls `emit` with the spans of the polygon `vertices` inside `clip`,
 /// top to bottom, if it is convex; `None`, with nothing emitted, if it is
-/// not (or has more than [`MAX_VERTICES`]).
+/// not.
 pub(crate) fn convex_spans<E>(
     vertices: &[Vertex],
     shape: Shape,
     clip: &Rectangle,
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Option<Result<(), E>> {
-    if vertices.len() > MAX_VERTICES {
-        return None;
-    }
     let Some(frame) = Frame::around(vertices, clip) else {
         // Convex or not, nothing of it is inside the clip.
         return Some(Ok(()));
@@ -94,26 +86,27 @@ fn walk_convex<E>(
     shape: Shape,
     emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
 ) -> Option<Result<(), E>> {
-    let mut p: Vec<(i32, i32), MAX_VERTICES> = Vec::new();
-    for &v in vertices {
-        p.push(frame.relative::<i32>(v)?).ok()?;
-    }
-    let clockwise = match (shape, p.as_slice()) {
-        (Shape::Polygon, _) => convex_turn(p.len(), |k| p[k])?,
+    // Vertex `k` relative to the frame. The frame fits `i32` for every
+    // vertex (`Frame::fits_i32`), so the default is never taken.
+    let p = |k: usize| frame.relative::<i32>(vertices[k]).unwrap_or_default();
+    let n = vertices.len();
+    let clockwise = match shape {
+        Shape::Polygon => convex_turn(n, p)?,
         // Coordinates within the bound: the orientation is exact. Of no
         // area, it lights nothing.
-        (Shape::Parallelogram, &[a, b, c, _]) => match orientation(a, b, c) {
+        Shape::Parallelogram if n == 4 => match orientation(p(0), p(1), p(2)) {
             0 => return Some(Ok(())),
             t => t > 0,
         },
-        (Shape::Parallelogram, _) => return None,
+        Shape::Parallelogram => return None,
     };
     // The first vertex at the least y: both chains start there.
-    let top = (0..p.len()).min_by_key(|&k| p[k].1)?;
+    let top = (0..n).min_by_key(|&k| p(k).1)?;
     let chain = |forwards| Chain {
-        p: &p,
+        p,
+        n,
         at: top,
-        left: p.len(),
+        left: n,
         forwards,
     };
     // Clockwise on screen, the forward chain runs down the right side.
@@ -124,30 +117,31 @@ fn walk_convex<E>(
 }
 
 /// The edges of a convex polygon's chain, top to bottom: from vertex `at`
-/// forwards (`at`, `at + 1`, ...) or backwards, while the outline goes down
-/// or stays level, leaving out the edges that cross no row of the frame.
-struct Chain<'a, T> {
-    p: &'a [(T, T)],
+/// (of `p(0), .., p(n - 1)`) forwards (`at`, `at + 1`, ...) or backwards,
+/// while the outline goes down or stays level, leaving out the edges that
+/// cross no row of the frame.
+struct Chain<F> {
+    p: F,
+    n: usize,
     at: usize,
     /// Edges not yet looked at: the chain ends after all of them at most.
     left: usize,
     forwards: bool,
 }
 
-impl<T: Narrow> Iterator for Chain<'_, T> {
-    type Item = Edge<T>;
+impl<F: Fn(usize) -> (i32, i32)> Iterator for Chain<F> {
+    type Item = Edge<i32>;
 
-    fn next(&mut self) -> Option<Edge<T>> {
-        let n = self.p.len();
+    fn next(&mut self) -> Option<Edge<i32>> {
         while self.left > 0 {
             self.left -= 1;
             let next = match self.forwards {
-                true if self.at + 1 == n => 0,
+                true if self.at + 1 == self.n => 0,
                 true => self.at + 1,
-                false if self.at == 0 => n - 1,
+                false if self.at == 0 => self.n - 1,
                 false => self.at - 1,
             };
-            let (a, b) = (*self.p.get(self.at)?, *self.p.get(next)?);
+            let (a, b) = ((self.p)(self.at), (self.p)(next));
             self.at = next;
             if b.1 < a.1 {
                 // Past the bottom vertex.
