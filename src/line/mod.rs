@@ -42,7 +42,7 @@
 //! # Thick lines
 //!
 //! [`StyledLine::stroke_width`] above 1 draws the line as a filled
-//! rectangle of that width with the triangle rasterizer: the rectangle
+//! rectangle of that width, walked as a convex polygon: the rectangle
 //! around the centre line from `A`'s centre to `B`'s centre, extended by
 //! half a pixel at each end, corners rounded to 1/4096 px. It follows the
 //! crate's sampling rule, so it shares edges with adjacent filled shapes
@@ -586,8 +586,8 @@ impl<C: PixelColor> SpanDrawable for StyledLine<C> {
 /// [`StyledLine::stroke_width`]: a [`Drawable`](embedded_graphics_core::Drawable).
 ///
 /// Width 1 draws the exact 1-pixel line and width 0 nothing. Wider lines
-/// are filled rectangles (see the [module docs](self#thick-lines)) drawn
-/// with the triangle rasterizer, one span per row. Widths above 65535 px
+/// are filled rectangles (see the [module docs](self#thick-lines)), walked
+/// as convex polygons, one span per row. Widths above 65535 px
 /// draw as 65535 px.
 ///
 /// # Examples

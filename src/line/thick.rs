@@ -1,4 +1,4 @@
-//! Thick lines as two triangles of the exact rasterizer.
+//! Thick lines as filled parallelograms of the exact rasterizer.
 //!
 //! A line of width `w` from pixel `A` to pixel `B` is the rectangle whose
 //! centre line runs from the centre of `A` to the centre of `B`, extended
