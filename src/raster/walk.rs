@@ -132,6 +132,26 @@ pub(crate) fn rows<T: Narrow, E>(
     Ok(())
 }
 
+/// Defines `$name`, [`rows`] out of line, in the module that invokes it:
+/// one copy per shape, in the shape's own codegen unit (see [`rows`]).
+macro_rules! rows_out_of_line {
+    ($(#[$doc:meta])* $name:ident) => {
+        $(#[$doc])*
+        #[inline(never)]
+        fn $name<T: $crate::raster::wide::Narrow, E>(
+            frame: &$crate::raster::frame::Frame,
+            left: &mut $crate::raster::edge::Edge<T>,
+            right: &mut $crate::raster::edge::Edge<T>,
+            from: i32,
+            end: i32,
+            emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
+        ) -> Result<(), E> {
+            $crate::raster::walk::rows(frame, left, right, from, end, emit)
+        }
+    };
+}
+pub(crate) use rows_out_of_line;
+
 /// Walks the rows of a shape outlined by two chains of edges that run from
 /// its top to its bottom, `left` on the left and `right` on the right,
 /// each edge set up on its first row in the frame (as `Edge::new(top,
@@ -170,18 +190,10 @@ pub(crate) fn walk_chains<T: Narrow, E>(
     }
 }
 
-/// [`rows`] out of line, for [`walk_chains`].
-#[inline(never)]
-fn chain_rows<T: Narrow, E>(
-    frame: &Frame,
-    left: &mut Edge<T>,
-    right: &mut Edge<T>,
-    from: i32,
-    end: i32,
-    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
-) -> Result<(), E> {
-    rows(frame, left, right, from, end, emit)
-}
+rows_out_of_line!(
+    /// [`rows`] out of line, for [`walk_chains`].
+    chain_rows
+);
 
 /// Moves `edge`, positioned on row `end`, on to the next row: to the next
 /// edge of its `chain` if it ends at `end`, else one step. `false` if the

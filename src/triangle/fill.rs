@@ -34,7 +34,7 @@ use crate::{
     raster::{
         edge::Edge,
         frame::Frame,
-        walk::{by_numbers_ref, emit_columns, rows},
+        walk::{by_numbers_ref, emit_columns, rows_out_of_line},
         wide::{orientation, Narrow, Wide},
     },
     span::Span,
@@ -392,19 +392,13 @@ fn walk<T: Narrow, E>(
     Ok(())
 }
 
-/// [`rows`] out of line, for the triangle walks (see [`rows`] for why it
-/// is defined here).
-#[inline(never)]
-fn triangle_rows<T: Narrow, E>(
-    frame: &Frame,
-    left: &mut Edge<T>,
-    right: &mut Edge<T>,
-    from: i32,
-    end: i32,
-    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
-) -> Result<(), E> {
-    rows(frame, left, right, from, end, emit)
-}
+rows_out_of_line!(
+    /// [`rows`] out of line, for the triangle walks (see [`rows`] for why
+    /// it is defined here).
+    ///
+    /// [`rows`]: crate::raster::walk::rows
+    triangle_rows
+);
 
 #[cfg(test)]
 mod tests {
