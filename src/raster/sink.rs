@@ -30,9 +30,11 @@ use crate::{
 /// Ranges: coordinates are any `i32` and lengths any `u32`; the provided
 /// methods saturate at `i32::MAX` rather than overflow. The crate's
 /// implementations, given pixels outside their bounds: a
-/// [`Framebuffer`](crate::Framebuffer) ignores those outside its bytes (a
-/// span past the end of a row may land in the next row), a
-/// [`DrawTargetSink`] passes them on to the `DrawTarget`, which clips.
+/// [`Framebuffer`](crate::Framebuffer) never writes outside its bytes (it
+/// drops a span that is not wholly inside one row, and a column's pixels
+/// past a row's end; a line walked through its bytes may reach the next
+/// row), a [`DrawTargetSink`] passes them on to the `DrawTarget`, which
+/// clips.
 ///
 /// # Examples
 ///
