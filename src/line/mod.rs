@@ -70,7 +70,7 @@ use embedded_graphics_core::{
 };
 
 use crate::{
-    polygon::convex::{fill_convex, Shape},
+    polygon::monotone::{fill_monotone, Shape},
     raster::sink::{drawable_through_spans, SpanDrawable, SpanSink},
     span::Span,
     triangle::Triangle,
@@ -763,7 +763,7 @@ fn draw_segment<C: PixelColor, S: SpanSink<C>>(
         0 => Ok(()),
         1 => source.draw_thin(&line, skip_end, color, sink),
         w => match thick::corners(line.start, line.end, w, &clip) {
-            Some(c) => match fill_convex(&c, Shape::Parallelogram, sink, color) {
+            Some(c) => match fill_monotone(&c, Shape::Parallelogram, sink, color) {
                 Some(done) => done,
                 // Over 131,072 px a side: the two triangles sharing its
                 // diagonal, which light the same pixels, in 64 bits (the

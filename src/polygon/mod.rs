@@ -20,7 +20,7 @@
 //! iff its centre nudged by `(e, e^2)` has a non-zero winding number
 //! ([`FillRule::NonZero`]) or an odd one ([`FillRule::EvenOdd`]).
 
-pub(crate) mod convex;
+pub(crate) mod monotone;
 mod predicates;
 mod scanline;
 mod triangulate;
@@ -41,7 +41,7 @@ use crate::{
     triangle::Triangle,
     vertex::Vertex,
 };
-use convex::{fill_convex, Shape};
+use monotone::{fill_monotone, Shape};
 
 /// Which pixels inside a self-overlapping outline are filled.
 ///
@@ -272,7 +272,7 @@ impl<'a, const N: usize> Polygon<'a, N> {
         f: impl FnMut(Span) -> Result<(), E>,
     ) -> Result<(), E> {
         let mut f = f;
-        match convex::convex_spans(self.vertices, Shape::Polygon, clip, &mut f) {
+        match monotone::monotone_spans(self.vertices, Shape::Polygon, clip, &mut f) {
             Some(done) => done,
             None => scanline::polygon_spans::<N, E>(self.vertices, rule, clip, f),
         }
@@ -447,7 +447,7 @@ impl<C: PixelColor, const N: usize> SpanDrawable for FilledPolygon<'_, C, N> {
                 self.color,
             );
         }
-        if let Some(done) = fill_convex(self.polygon.vertices, Shape::Polygon, sink, self.color) {
+        if let Some(done) = fill_monotone(self.polygon.vertices, Shape::Polygon, sink, self.color) {
             return done;
         }
         scanline::polygon_spans::<N, _>(self.polygon.vertices, self.rule, &clip, |span| {

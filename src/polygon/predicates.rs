@@ -1,6 +1,8 @@
 //! Exact geometric predicates on 20.12 vertices, in `i128` (coordinate
 //! differences reach 2^32, their products 2^64).
 
+use core::cmp::Ordering;
+
 use crate::{
     raster::wide::{orientation, Narrow, Wide},
     vertex::Vertex,
@@ -141,6 +143,30 @@ pub(crate) fn convex_turn<T: Narrow>(n: usize, p: impl Fn(usize) -> (T, T)) -> O
     // Close the cycle.
     dx_changes += u32::from(first_dx != last_dx);
     ((clockwise || counter) && dx_changes == 2).then_some(clockwise)
+}
+
+/// Whether the closed polygon with vertices at heights `y(0), .., y(n - 1)`
+/// (`y` is called with `0..n` only) goes down and back up only once: the
+/// signs of its edges' y steps, level edges left out, change exactly twice
+/// round the cycle. Then every row sample line between its top and its
+/// bottom crosses exactly two of its edges, one of each chain from the top
+/// vertex to the bottom one. Every convex polygon is y-monotone.
+pub(crate) fn y_monotone<T: Ord>(n: usize, y: impl Fn(usize) -> T) -> bool {
+    let next = |k: usize| if k + 1 == n { 0 } else { k + 1 };
+    let step = |k: usize| y(next(k)).cmp(&y(k));
+    // The last step that is not level, cyclically before the first edge.
+    let Some(mut last) = (0..n).rev().map(step).find(|&s| s != Ordering::Equal) else {
+        return false;
+    };
+    let mut changes = 0u32;
+    for k in 0..n {
+        let s = step(k);
+        if s != Ordering::Equal {
+            changes += u32::from(s != last);
+            last = s;
+        }
+    }
+    changes == 2
 }
 
 /// `q` lies inside or on the triangle `a, b, c` of orientation `orient`.

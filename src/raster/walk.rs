@@ -84,7 +84,9 @@ pub(crate) fn emit_columns<E>(
 /// Emits rows `from..=end` between `left` and `right`, both positioned on
 /// row `from`; leaves both on `end` (never steps past it, so values stay
 /// within the edges' bounds). The side is data here, not a type, and the
-/// loop does not depend on it.
+/// loop does not depend on it. With `ORDERED` false, the two edges may be
+/// on either side, and cross: each row's span runs between the lesser
+/// and the greater threshold (two more selects a row).
 ///
 /// Always inlined, into one out-of-line function per shape, defined in
 /// the shape's own module (`triangle_rows`, `chain_rows`): out of line,
@@ -98,7 +100,7 @@ pub(crate) fn emit_columns<E>(
 /// instructions instead of 1,250 (`.ci/icount`), the same code compiled
 /// into other registers.
 #[inline(always)]
-pub(crate) fn rows<T: Narrow, E>(
+pub(crate) fn rows<const ORDERED: bool, T: Narrow, E>(
     frame: &Frame,
     left: &mut Edge<T>,
     right: &mut Edge<T>,
@@ -114,8 +116,12 @@ pub(crate) fn rows<T: Narrow, E>(
     let (mut l, mut r) = (*left, *right);
     let mut row = from;
     while row <= end {
-        let x0 = l.threshold().max(T::ZERO);
-        let x1 = r.threshold().min(width);
+        let (tl, tr) = (l.threshold(), r.threshold());
+        let (x0, x1) = match ORDERED {
+            true => (tl, tr),
+            false => (tl.min(tr), tl.max(tr)),
+        };
+        let (x0, x1) = (x0.max(T::ZERO), x1.min(width));
         if x0 < x1 {
             if let (Some(x0), Some(x1)) = (x0.to_i32(), x1.to_i32()) {
                 emit_columns(frame, row, x0, x1, emit)?;
@@ -138,7 +144,7 @@ macro_rules! rows_out_of_line {
     ($(#[$doc:meta])* $name:ident) => {
         $(#[$doc])*
         #[inline(never)]
-        fn $name<T: $crate::raster::wide::Narrow, E>(
+        fn $name<const ORDERED: bool, T: $crate::raster::wide::Narrow, E>(
             frame: &$crate::raster::frame::Frame,
             left: &mut $crate::raster::edge::Edge<T>,
             right: &mut $crate::raster::edge::Edge<T>,
@@ -146,14 +152,15 @@ macro_rules! rows_out_of_line {
             end: i32,
             emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
         ) -> Result<(), E> {
-            $crate::raster::walk::rows(frame, left, right, from, end, emit)
+            $crate::raster::walk::rows::<ORDERED, T, E>(frame, left, right, from, end, emit)
         }
     };
 }
 pub(crate) use rows_out_of_line;
 
 /// Walks the rows of a shape outlined by two chains of edges that run from
-/// its top to its bottom, `left` on the left and `right` on the right,
+/// its top to its bottom, `left` on the left and `right` on the right
+/// (with `ORDERED` false, on either side, crossing or not: see [`rows`]),
 /// each edge set up on its first row in the frame (as `Edge::new(top,
 /// bottom, 0)` does) and the edges that cross no row left out. Down each
 /// chain, every row of the shape is crossed by exactly one edge (the next
@@ -163,7 +170,7 @@ pub(crate) use rows_out_of_line;
 ///
 /// Each stretch of rows between two changes of edge is one call of
 /// [`rows`], as a triangle's halves are.
-pub(crate) fn walk_chains<T: Narrow, E>(
+pub(crate) fn walk_chains<const ORDERED: bool, T: Narrow, E>(
     frame: &Frame,
     mut left: impl Iterator<Item = Edge<T>>,
     mut right: impl Iterator<Item = Edge<T>>,
@@ -179,7 +186,7 @@ pub(crate) fn walk_chains<T: Narrow, E>(
     }
     loop {
         let end = l.last_row.min(r.last_row).min(last);
-        chain_rows(frame, &mut l, &mut r, row, end, emit)?;
+        chain_rows::<ORDERED, T, E>(frame, &mut l, &mut r, row, end, emit)?;
         if end >= last {
             return Ok(());
         }

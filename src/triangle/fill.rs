@@ -185,8 +185,10 @@ impl TriangleRows {
                 return Ok(false);
             }
             match self.short_left {
-                true => triangle_rows(frame, short, &mut self.long, from, end, emit)?,
-                false => triangle_rows(frame, &mut self.long, short, from, end, emit)?,
+                true => triangle_rows::<true, _, _>(frame, short, &mut self.long, from, end, emit)?,
+                false => {
+                    triangle_rows::<true, _, _>(frame, &mut self.long, short, from, end, emit)?
+                }
             }
             self.row = end + 1;
             if end < half_end {
@@ -375,8 +377,8 @@ fn walk<T: Narrow, E>(
     let mut half = |short: &mut Edge<T>, long: &mut Edge<T>| {
         let (from, end) = (short.first_row, short.last_row.min(last));
         match short_left {
-            true => triangle_rows(frame, short, long, from, end, emit),
-            false => triangle_rows(frame, long, short, from, end, emit),
+            true => triangle_rows::<true, _, _>(frame, short, long, from, end, emit),
+            false => triangle_rows::<true, _, _>(frame, long, short, from, end, emit),
         }
         .map(|()| end)
     };

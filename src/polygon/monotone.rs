@@ -1,24 +1,28 @@
-//! Convex polygons as two chains of edges, walked like a triangle.
+//! Polygons whose rows two edges cross, walked like a triangle.
 //!
-//! A convex polygon's outline runs from its top vertex down to its bottom
-//! one along two chains, one on each side, and every row sample line
-//! between them crosses each chain exactly once: a row's span runs from
-//! the left chain's threshold to the right chain's, as a triangle's does
-//! between its long and its short edge. So a convex polygon needs no edge
-//! table, no sort and no winding: two active edges at a time, each
-//! stepped in O(1) a row and handed over to the next edge of its chain at
-//! a vertex ([`walk_chains`]). The pixels are the scanline fill's, under
-//! either rule (the polygon winds once, so both fill its inside); only
-//! the work differs.
+//! A polygon that goes down from its top vertex and back up only once
+//! (y-monotone: every convex polygon, and many concave ones) has an
+//! outline of two chains of edges from its top vertex down to its bottom
+//! one, and every row sample line between them crosses each chain exactly
+//! once. Each row then has two crossings, the polygon winds once (either
+//! way) between them and not at all outside, so under either fill rule a
+//! row's span runs from the lesser threshold to the greater, as a
+//! triangle's does between its long and its short edge. No edge table, no
+//! sort, no windings: two active edges at a time, each stepped in O(1) a
+//! row and handed over to the next edge of its chain at a vertex
+//! ([`walk_chains`]). The pixels are the scanline fill's; only the work
+//! differs.
 //!
-//! Whether a polygon is convex is decided exactly on its coordinates
-//! relative to its frame, in the edges' own width ([`convex_turn`]): a
-//! polygon that is not (concave, self-intersecting, with a repeated
-//! vertex or a fold-back) gets `None` and takes the edge table.
+//! Whether a polygon is y-monotone is decided by the signs of its edges'
+//! y steps alone ([`y_monotone`]), no products; one that is not (a star,
+//! most self-intersecting outlines) gets `None` and takes the edge table.
+//! A parallelogram (a thick line's rectangle) is convex by construction:
+//! its sides are fixed by one orientation and its rows skip the two
+//! selects.
 
 use embedded_graphics_core::primitives::Rectangle;
 
-use super::predicates::convex_turn;
+use super::predicates::y_monotone;
 use crate::{
     raster::{
         edge::Edge,
@@ -31,10 +35,10 @@ use crate::{
     vertex::Vertex,
 };
 
-/// What the convex walk knows of its polygon.
+/// What the two-chain walk knows of its polygon.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Shape {
-    /// Nothing: it may not be convex.
+    /// Nothing: it may not be y-monotone.
     Polygon,
     /// It is a parallelogram (its corners in order round it, `c[0] + c[2]
     /// = c[1] + c[3]`), so convex, or of no area: a thick line's
@@ -43,30 +47,30 @@ pub(crate) enum Shape {
     Parallelogram,
 }
 
-/// Fills the polygon `vertices` with `color` in `sink` if it is convex;
-/// `None`, with nothing drawn, if it is not. One copy per sink for every
-/// convex shape.
-pub(crate) fn fill_convex<C: Copy, S: SpanSink<C>>(
+/// Fills the polygon `vertices` with `color` in `sink` if it is
+/// y-monotone; `None`, with nothing drawn, if it is not. One copy per sink
+/// for polygons and thick lines alike.
+pub(crate) fn fill_monotone<C: Copy, S: SpanSink<C>>(
     vertices: &[Vertex],
     shape: Shape,
     sink: &mut S,
     color: C,
 ) -> Option<Result<(), S::Error>> {
     let clip = sink.bounds();
-    convex_spans(vertices, shape, &clip, &mut |s| sink.fill_span(s, color))
+    monotone_spans(vertices, shape, &clip, &mut |s| sink.fill_span(s, color))
 }
 
 /// Calls `emit` with the spans of the polygon `vertices` inside `clip`,
-/// top to bottom, if it is convex; `None`, with nothing emitted, if it is
-/// not.
-pub(crate) fn convex_spans<E>(
+/// top to bottom, if it is y-monotone; `None`, with nothing emitted, if it
+/// is not.
+pub(crate) fn monotone_spans<E>(
     vertices: &[Vertex],
     shape: Shape,
     clip: &Rectangle,
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Option<Result<(), E>> {
     let Some(frame) = Frame::around(vertices, clip) else {
-        // Convex or not, nothing of it is inside the clip.
+        // Monotone or not, nothing of it is inside the clip.
         return Some(Ok(()));
     };
     // A polygon reaching 2^29 raw units (131,072 px) from its frame's
@@ -75,12 +79,13 @@ pub(crate) fn convex_spans<E>(
     if !frame.fits_i32() {
         return None;
     }
-    walk_convex(&frame, vertices, shape, &mut by_numbers_ref(emit))
+    walk_monotone(&frame, vertices, shape, &mut by_numbers_ref(emit))
 }
 
-/// [`convex_spans`] in `i32`, for a frame whose relative coordinates fit
-/// it: `None` if the polygon is not convex (never for a parallelogram).
-fn walk_convex<E>(
+/// [`monotone_spans`] in `i32`, for a frame whose relative coordinates
+/// fit it: `None` if the polygon is not y-monotone (never for a
+/// parallelogram).
+fn walk_monotone<E>(
     frame: &Frame,
     vertices: &[Vertex],
     shape: Shape,
@@ -90,16 +95,6 @@ fn walk_convex<E>(
     // vertex (`Frame::fits_i32`), so the default is never taken.
     let p = |k: usize| frame.relative::<i32>(vertices[k]).unwrap_or_default();
     let n = vertices.len();
-    let clockwise = match shape {
-        Shape::Polygon => convex_turn(n, p)?,
-        // Coordinates within the bound: the orientation is exact. Of no
-        // area, it lights nothing.
-        Shape::Parallelogram if n == 4 => match orientation(p(0), p(1), p(2)) {
-            0 => return Some(Ok(())),
-            t => t > 0,
-        },
-        Shape::Parallelogram => return None,
-    };
     // The first vertex at the least y: both chains start there.
     let top = (0..n).min_by_key(|&k| p(k).1)?;
     let chain = |forwards| Chain {
@@ -109,14 +104,26 @@ fn walk_convex<E>(
         left: n,
         forwards,
     };
-    // Clockwise on screen, the forward chain runs down the right side.
-    Some(match clockwise {
-        true => walk_chains(frame, chain(false), chain(true), emit),
-        false => walk_chains(frame, chain(true), chain(false), emit),
+    Some(match shape {
+        Shape::Polygon => match y_monotone(n, |k| p(k).1) {
+            // Either chain on either side: the lesser threshold and the
+            // greater bound each row.
+            true => walk_chains::<false, _, _>(frame, chain(true), chain(false), emit),
+            false => return None,
+        },
+        // Coordinates within the bound: the orientation is exact. Of no
+        // area, it lights nothing. Clockwise on screen, the forward chain
+        // runs down the right side.
+        Shape::Parallelogram if n == 4 => match orientation(p(0), p(1), p(2)) {
+            0 => Ok(()),
+            t if t > 0 => walk_chains::<true, _, _>(frame, chain(false), chain(true), emit),
+            _ => walk_chains::<true, _, _>(frame, chain(true), chain(false), emit),
+        },
+        Shape::Parallelogram => return None,
     })
 }
 
-/// The edges of a convex polygon's chain, top to bottom: from vertex `at`
+/// The edges of a y-monotone polygon's chain, top to bottom: from vertex `at`
 /// (of `p(0), .., p(n - 1)`) forwards (`at`, `at + 1`, ...) or backwards,
 /// while the outline goes down or stays level, leaving out the edges that
 /// cross no row of the frame.
