@@ -1,11 +1,12 @@
 //! Filled polygons: an exact fill with both fill rules, triangulation, and
 //! exact simplicity and convexity tests.
 //!
-//! A convex polygon is walked as two chains of edges, from its top vertex
-//! to its bottom one, one span a row, like a triangle; any other polygon
-//! (concave, self-intersecting) by an active-edge-table scanline fill. The
-//! convexity test is exact and costs one pass over the vertices. Both
-//! light the same pixels.
+//! A polygon that goes down from its top vertex and back up only once
+//! (y-monotone: every convex polygon and many concave ones) is walked as
+//! two chains of edges, from its top vertex to its bottom one, one span a
+//! row, like a triangle; any other polygon (a star, most self-intersecting
+//! outlines) by an active-edge-table scanline fill. The test compares the
+//! vertices' heights only, one pass. Both light the same pixels.
 //!
 //! A polygon borrows its vertices and is closed implicitly (the last vertex
 //! connects to the first); it may be concave and may cross itself. Its edge
