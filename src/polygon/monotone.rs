@@ -69,8 +69,14 @@ pub(crate) fn monotone_spans<E>(
     clip: &Rectangle,
     emit: &mut impl FnMut(Span) -> Result<(), E>,
 ) -> Option<Result<(), E>> {
+    // Tested on the vertices' own heights, before any frame: a polygon
+    // that takes the edge table sets its frame up only there.
+    if let Shape::Polygon = shape {
+        if !y_monotone(vertices.len(), |k| vertices[k].raw().1) {
+            return None;
+        }
+    }
     let Some(frame) = Frame::around(vertices, clip) else {
-        // Monotone or not, nothing of it is inside the clip.
         return Some(Ok(()));
     };
     // A polygon reaching 2^29 raw units (131,072 px) from its frame's
@@ -82,9 +88,9 @@ pub(crate) fn monotone_spans<E>(
     walk_monotone(&frame, vertices, shape, &mut by_numbers_ref(emit))
 }
 
-/// [`monotone_spans`] in `i32`, for a frame whose relative coordinates
-/// fit it: `None` if the polygon is not y-monotone (never for a
-/// parallelogram).
+/// [`monotone_spans`] in `i32`, for a y-monotone polygon (or a
+/// parallelogram) whose relative coordinates fit the frame; `None` only if
+/// a parallelogram does not have four corners.
 fn walk_monotone<E>(
     frame: &Frame,
     vertices: &[Vertex],
@@ -105,12 +111,9 @@ fn walk_monotone<E>(
         forwards,
     };
     Some(match shape {
-        Shape::Polygon => match y_monotone(n, |k| p(k).1) {
-            // Either chain on either side: the lesser threshold and the
-            // greater bound each row.
-            true => walk_chains::<false, _, _>(frame, chain(true), chain(false), emit),
-            false => return None,
-        },
+        // Either chain on either side: the lesser threshold and the greater
+        // bound each row.
+        Shape::Polygon => walk_chains::<false, _, _>(frame, chain(true), chain(false), emit),
         // Coordinates within the bound: the orientation is exact. Of no
         // area, it lights nothing. Clockwise on screen, the forward chain
         // runs down the right side.

@@ -3,10 +3,7 @@
 
 use core::cmp::Ordering;
 
-use crate::{
-    raster::wide::{orientation, Narrow, Wide},
-    vertex::Vertex,
-};
+use crate::vertex::Vertex;
 
 pub(crate) type P = (i128, i128);
 
@@ -83,66 +80,48 @@ pub(crate) fn is_simple(v: &[Vertex]) -> bool {
 /// one full turn, and no edge has zero length: a convex, simple polygon with
 /// non-zero area.
 pub(crate) fn is_convex(v: &[Vertex]) -> bool {
-    let at = |k: usize| {
-        let (x, y) = v[k].raw();
-        (i64::from(x), i64::from(y))
-    };
-    convex_turn(v.len(), at).is_some()
-}
-
-/// Which way the convex polygon `p(0), .., p(n - 1)` turns (`p` is called
-/// with `0..n` only): `Some(true)`
-/// if clockwise on screen (y down), `Some(false)` if counter-clockwise;
-/// `None` if it is not convex ([`is_convex`]: an edge of zero length, an
-/// edge folding back over the one before, corners turning both ways or
-/// none turning, or turns adding up to more than one full turn, which
-/// the edges' x direction changing sign more than twice, cyclically,
-/// shows). Exact for coordinates within the bound of [`orientation`] for
-/// `T`; an early `None` at the first corner that shows it.
-pub(crate) fn convex_turn<T: Narrow>(n: usize, p: impl Fn(usize) -> (T, T)) -> Option<bool> {
+    let n = v.len();
     if n < 3 {
-        return None;
+        return false;
     }
-    let sign = |v: T| i8::from(v > T::ZERO) - i8::from(v < T::ZERO);
-    let (mut clockwise, mut counter) = (false, false);
-    let mut dx_changes = 0u32;
-    let (mut first_dx, mut last_dx) = (0, 0);
-    // Corner b of the edges a -> b -> c, for each vertex in turn.
-    let (mut a, mut b) = (p(0), p(1));
+    let p = |k: usize| pt(v[k % n]);
+    let mut turn = 0;
+    // Sign changes of the edges' x direction, cyclically: two for one turn.
+    let mut dx_changes = 0;
+    let mut last_dx = 0;
     for i in 0..n {
-        let c = p(match i + 2 {
-            k if k >= n => k - n,
-            k => k,
-        });
+        let (a, b, c) = (p(i), p(i + 1), p(i + 2));
         if a == b {
-            return None;
+            return false;
         }
-        let t = orientation(a, b, c);
-        if t == T::Double::ZERO {
-            // Parallel edges fold back iff their directions' signs differ.
-            let folds = |k: fn(&(T, T)) -> T| sign(k(&b) - k(&a)) != sign(k(&c) - k(&b));
-            if folds(|q| q.0) || folds(|q| q.1) {
-                return None;
+        let t = cross(a, b, c).signum();
+        if t == 0 && dot(a, b, c) < 0 {
+            return false;
+        }
+        if t != 0 {
+            if turn != 0 && t != turn {
+                return false;
             }
+            turn = t;
         }
-        clockwise |= t > T::Double::ZERO;
-        counter |= t < T::Double::ZERO;
-        if clockwise && counter {
-            return None;
-        }
-        let dx = sign(b.0 - a.0);
+        let dx = (b.0 - a.0).signum();
         if dx != 0 {
-            dx_changes += u32::from(last_dx != 0 && dx != last_dx);
-            if first_dx == 0 {
-                first_dx = dx;
+            if last_dx != 0 && dx != last_dx {
+                dx_changes += 1;
             }
             last_dx = dx;
         }
-        (a, b) = (b, c);
     }
-    // Close the cycle.
-    dx_changes += u32::from(first_dx != last_dx);
-    ((clockwise || counter) && dx_changes == 2).then_some(clockwise)
+    // Close the cycle: compare the first non-zero dx with the last.
+    if let Some(first) = (0..n)
+        .map(|i| (p(i + 1).0 - p(i).0).signum())
+        .find(|&d| d != 0)
+    {
+        if first != last_dx {
+            dx_changes += 1;
+        }
+    }
+    turn != 0 && dx_changes == 2
 }
 
 /// Whether the closed polygon with vertices at heights `y(0), .., y(n - 1)`
