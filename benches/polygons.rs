@@ -53,10 +53,40 @@ fn sets() -> Vec<Set> {
             )
         })
         .collect();
+    // Random octagons as `.ci/icount` has them: vertices at fractional
+    // positions, by angle round a centre (so simple), radii 40 % to 100 %
+    // of 13 px (so often concave).
+    let mut state = 0x2545_F491_4F6C_DD1Du64;
+    let mut random = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let octagons = (0..60)
+        .map(|k| {
+            let (cx, cy) = (
+                16.0 + (k % 10) as f64 * 30.0 + random(),
+                16.0 + (k / 10) as f64 * 36.0 + random(),
+            );
+            (0..8)
+                .map(|j| {
+                    let a = TAU * (j as f64 + 0.8 * random() - 0.4) / 8.0;
+                    let r = 13.0 * (0.4 + 0.6 * random());
+                    (cx + r * a.cos(), cy + r * a.sin())
+                })
+                .collect()
+        })
+        .collect();
     vec![
         Set {
             name: "hexagons 18 px (x60)",
             polygons: hexagons,
+            simple: true,
+        },
+        Set {
+            name: "random octagons 26 px (x60)",
+            polygons: octagons,
             simple: true,
         },
         Set {

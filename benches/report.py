@@ -31,7 +31,7 @@ SUITES = {
         "tri",
     ),
     "polygons": (
-        ["hexagons 18 px (x60)", "convex 24-gon 200 px", "concave star 24 vertices 200 px",
+        ["hexagons 18 px (x60)", "random octagons 26 px (x60)", "convex 24-gon 200 px", "concave star 24 vertices 200 px",
          "pentagram 200 px (self-intersecting)"],
         ["fill", "triangulate and fill", "fill triangulated once", "tiny-skia"],
         ["triangulate and fill", "fill triangulated once", "tiny-skia"],
