@@ -8,7 +8,8 @@
 //! - [`edge`]: the exact incremental edge, the threshold column where an
 //!   edge crosses each row, stepped in O(1) per row without division.
 //! - [`walk`]: the rows between a left and a right edge, for every shape
-//!   whose rows two edges cross (triangles, convex polygons).
+//!   whose rows two edges cross (triangles, thick lines, y-monotone
+//!   polygons).
 //! - [`sink`]: where spans go; only sinks touch pixels.
 
 pub(crate) mod edge;

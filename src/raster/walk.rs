@@ -1,12 +1,13 @@
 //! The two-edge walk: the rows between a left and a right edge.
 //!
-//! Every filled shape whose rows are each crossed by exactly two edges,
-//! one on each side, is walked here: a triangle (its long edge on one
-//! side, its two short edges in turn on the other) and a convex polygon
-//! (a chain of edges from the top vertex to the bottom one on each side,
-//! see [`walk_chains`]). Each row's span runs from the left edge's
-//! threshold to the right one's, clipped to the frame; the edges step in
-//! O(1) a row ([`Edge`]), and the span goes to the sink as three numbers.
+//! Every filled shape whose rows are each crossed by exactly two edges is
+//! walked here: a triangle (its long edge on one side, its two short
+//! edges in turn on the other), a thick line's parallelogram and any
+//! y-monotone polygon (a chain of edges from the top vertex to the bottom
+//! one each way round, see [`walk_chains`]). Each row's span runs from the
+//! left edge's threshold to the right one's (for a polygon, the lesser to
+//! the greater), clipped to the frame; the edges step in O(1) a row
+//! ([`Edge`]), and the span goes to the sink as three numbers.
 
 use super::{edge::Edge, frame::Frame, wide::Narrow};
 use crate::span::Span;
@@ -17,9 +18,9 @@ use crate::span::Span;
 /// 16 px triangle on a Cortex-M4, `.ci/icount`: 1,781 instructions with a
 /// `Span`, 1,568 with its numbers).
 ///
-/// This one holds a reference to `emit`: what the band walk, convex
-/// polygons and 32-bit ARM use. See [`by_numbers`] for hosts. Always
-/// inlined, and so is its closure: left to the compiler, the convex walk
+/// This one holds a reference to `emit`: what the band walk, the chain
+/// walk and 32-bit ARM use. See [`by_numbers`] for hosts. Always
+/// inlined, and so is its closure: left to the compiler, the chain walk
 /// on a Cortex-M4 called the closure, with the sink's fill in it, once a
 /// row.
 #[inline(always)]
@@ -165,8 +166,8 @@ pub(crate) use rows_out_of_line;
 /// bottom, 0)` does) and the edges that cross no row left out. Down each
 /// chain, every row of the shape is crossed by exactly one edge (the next
 /// edge starts on the row after the last one's end), and both chains
-/// start on the same row; a pair of chains breaking this (which no convex
-/// outline does) ends the walk there.
+/// start on the same row; a pair of chains breaking this (which no
+/// y-monotone outline does) ends the walk there.
 ///
 /// Each stretch of rows between two changes of edge is one call of
 /// [`rows`], as a triangle's halves are.
