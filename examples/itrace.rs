@@ -12,8 +12,9 @@
 //! 3. a 64 px triangle, the same way;
 //! 4. a line 3 px wide and 100 px long at a slope of 1/2 (the second of
 //!    `.ci/icount`'s "3 px wide" lines): its corners, then its rows;
-//! 5. an 18 px hexagon (`.ci/icount`'s hexagons): the convexity test and
-//!    the two chains of edges.
+//! 5. an 18 px hexagon (`.ci/icount`'s hexagons): the monotone test and
+//!    the two chains of edges;
+//! 6. `.ci/icount`'s pentagram, 220 px, even-odd: the active edge table.
 //!
 //! Built for the host, it does nothing.
 
@@ -80,6 +81,14 @@ mod target {
         let poly = embedded_raster::Polygon::<12>::new(&hex)
             .unwrap()
             .fill(Rgb565::RED);
+        begin();
+        let Ok(()) = black_box(&poly).draw_spans(black_box(FB));
+        end();
+        let star = super::builtin_scene::pentagram((160, 120), 110);
+        let poly = embedded_raster::Polygon::<12>::new(&star)
+            .unwrap()
+            .fill(Rgb565::RED)
+            .with_rule(embedded_raster::FillRule::EvenOdd);
         begin();
         let Ok(()) = black_box(&poly).draw_spans(black_box(FB));
         end();

@@ -79,9 +79,17 @@ impl FillRule {
     /// assert!(!FillRule::NonZero.fills(0));
     /// ```
     pub fn fills(self, winding: i32) -> bool {
+        winding & self.winding_mask() != 0
+    }
+
+    /// The bits of a winding number that decide [`fills`](Self::fills):
+    /// all of them for non-zero, the lowest for even-odd. The edge table
+    /// tests a row's windings by it, with no branch on the rule.
+    #[inline(always)]
+    pub(crate) fn winding_mask(self) -> i32 {
         match self {
-            Self::NonZero => winding != 0,
-            Self::EvenOdd => winding & 1 != 0,
+            Self::NonZero => -1,
+            Self::EvenOdd => 1,
         }
     }
 }

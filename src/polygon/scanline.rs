@@ -22,7 +22,12 @@ use embedded_graphics_core::primitives::Rectangle;
 use heapless::Vec;
 
 use crate::{
-    raster::{edge::Edge, frame::Frame, wide::Narrow},
+    raster::{
+        edge::Edge,
+        frame::Frame,
+        walk::{by_numbers_ref, emit_columns},
+        wide::Narrow,
+    },
     span::Span,
     vertex::Vertex,
 };
@@ -73,6 +78,15 @@ pub(crate) fn polygon_spans<const N: usize, E>(
 /// [`polygon_spans`] with edges stepped in `T`, for a frame whose
 /// relative coordinates fit it. Out of line, so that the two widths'
 /// edge tables never share the stack: the larger, `i64`'s, bounds it.
+///
+/// The table is one array of edge records in three parts: the active
+/// edges, sorted by their crossing of the current row; the slots of
+/// edges that have ended; the edges still to come, sorted by their first
+/// row. An edge is activated by swapping it into the first ended slot
+/// (it stays where it is if none has ended), and on a row where edges
+/// end, the edges that go on are swapped forward over them. Records move
+/// by value rather than through a list of indices: a row reads each
+/// active edge once, with no second lookup.
 #[inline(never)]
 fn scan<T: Narrow, const N: usize, E>(
     frame: &Frame,
@@ -84,6 +98,7 @@ fn scan<T: Narrow, const N: usize, E>(
     // through the reference instead, the Cortex-M4 took 5,854
     // instructions an 18 px hexagon rather than 5,808 (`.ci/icount`).
     let frame = &{ *frame };
+    let emit = &mut by_numbers_ref(&mut emit);
     let mut edges: Vec<Directed<T>, N> = Vec::new();
     for (k, &from) in vertices.iter().enumerate() {
         let to = vertices[(k + 1) % vertices.len()];
@@ -94,37 +109,72 @@ fn scan<T: Narrow, const N: usize, E>(
             }
         }
     }
-    sort_by_first_row(&mut edges);
+    let edges = edges.as_mut_slice();
+    sort_by_first_row(edges);
 
-    let mut active: Vec<usize, N> = Vec::new();
-    let mut next = 0;
+    // Edges `..active` are active; `next..` are still to come.
+    let (mut active, mut next) = (0, 0);
     let Some(mut row) = edges.first().map(|e| e.edge.first_row) else {
         return Ok(());
     };
     while row < frame.height {
         // Activate the edges starting on this row.
         while edges.get(next).is_some_and(|e| e.edge.first_row <= row) {
-            // Cannot fail: `active` holds distinct edges.
-            let _ = active.push(next);
+            // `active <= next`: the slot is free, or the edge's own (no
+            // edge has ended yet).
+            if active < next {
+                swap_apart(edges, active, next);
+            }
+            active += 1;
             next += 1;
         }
-        if active.is_empty() {
+        let Some(current) = edges.get_mut(..active).filter(|a| !a.is_empty()) else {
             // Jump to the next edge, if any.
             match edges.get(next) {
                 Some(e) => row = e.edge.first_row,
                 None => break,
             }
             continue;
+        };
+        sort_by_crossing(current);
+        emit_row(row, current, rule, frame, emit)?;
+        // Step the edges that go on, in place (an edge never steps past
+        // its last row); on the few rows where some end, close their gaps.
+        let mut ended = false;
+        for e in current.iter_mut() {
+            match e.edge.last_row > row {
+                true => e.edge.step(),
+                false => ended = true,
+            }
         }
-        sort_by_crossing(&mut active, &edges);
-        emit_row(row, &active, &edges, rule, frame, &mut emit)?;
-        active.retain(|&k| edges[k].edge.last_row > row);
-        for &k in active.iter() {
-            edges[k].edge.step();
+        let mut kept = current.len();
+        if ended {
+            kept = 0;
+            for k in 0..current.len() {
+                if current[k].edge.last_row > row {
+                    if kept < k {
+                        swap_apart(current, kept, k);
+                    }
+                    kept += 1;
+                }
+            }
         }
+        active = kept;
         row += 1;
     }
     Ok(())
+}
+
+/// Swaps records `i < j` of `edges` (nothing if `j` is out of bounds).
+/// Two distinct records, so the swap moves them through registers: the
+/// slice's own `swap`, which allows `i == j`, called `memmove` for them
+/// on a Cortex-M4.
+#[inline(always)]
+fn swap_apart<T: Copy>(edges: &mut [Directed<T>], i: usize, j: usize) {
+    let (head, tail) = edges.split_at_mut(j.min(edges.len()));
+    if let (Some(a), Some(b)) = (head.get_mut(i), tail.first_mut()) {
+        core::mem::swap(a, b);
+    }
 }
 
 /// Sorts `edges` by their first row: a heapsort, in place and in
@@ -146,7 +196,7 @@ fn sort_by_first_row<T: Copy>(edges: &mut [Directed<T>]) {
             if key(edges, root) >= key(edges, child) {
                 break;
             }
-            edges.swap(root, child);
+            swap_apart(edges, root, child);
             root = child;
         }
     };
@@ -155,17 +205,18 @@ fn sort_by_first_row<T: Copy>(edges: &mut [Directed<T>]) {
         sift(edges, root, n);
     }
     for end in (1..n).rev() {
-        edges.swap(0, end);
+        swap_apart(edges, 0, end);
         sift(edges, 0, end);
     }
 }
 
-/// Insertion sort: from one row to the next the order barely changes.
-fn sort_by_crossing<T: Narrow>(active: &mut [usize], edges: &[Directed<T>]) {
+/// Insertion sort by crossing: from one row to the next the order barely
+/// changes, so this is one comparison an edge on most rows.
+fn sort_by_crossing<T: Narrow>(active: &mut [Directed<T>]) {
     for i in 1..active.len() {
         let mut j = i;
-        while j > 0 && edges[active[j - 1]].edge.crossing() > edges[active[j]].edge.crossing() {
-            active.swap(j - 1, j);
+        while j > 0 && active[j - 1].edge.crossing_key() > active[j].edge.crossing_key() {
+            swap_apart(active, j - 1, j);
             j -= 1;
         }
     }
@@ -174,54 +225,54 @@ fn sort_by_crossing<T: Narrow>(active: &mut [usize], edges: &[Directed<T>]) {
 /// Sweeps the sorted thresholds of `row`, emitting each maximal run of
 /// pixels the rule fills, clipped to the frame. Edges sharing a threshold
 /// are applied together, so a run never splits where one edge ends and
-/// another begins.
+/// another begins. Each edge's threshold is found once, and the rule is
+/// a mask of the winding number ([`FillRule::winding_mask`]), not a
+/// branch.
 fn emit_row<T: Narrow, E>(
     row: i32,
-    active: &[usize],
-    edges: &[Directed<T>],
+    active: &[Directed<T>],
     rule: FillRule,
     frame: &Frame,
-    emit: &mut impl FnMut(Span) -> Result<(), E>,
+    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
 ) -> Result<(), E> {
     let Some(width) = T::narrow(frame.width.into()) else {
         return Ok(());
     };
+    let mask = rule.winding_mask();
     // A sum of at most `N` edge directions of +-1, and the `N` edge records
     // (56 bytes each) live on the stack, so `|winding| <= N < 2^31`: the
     // sum cannot overflow.
     let mut winding: i32 = 0;
-    let mut run_start = None;
-    let mut k = 0;
-    while let Some(&first) = active.get(k) {
-        let x = edges[first].edge.threshold();
-        let was_in = rule.fills(winding);
-        while let Some(e) = active
-            .get(k)
-            .map(|&i| &edges[i])
-            .filter(|e| e.edge.threshold() == x)
-        {
-            winding += i32::from(e.winding);
-            k += 1;
-        }
-        match (was_in, rule.fills(winding)) {
-            (false, true) => run_start = Some(x),
-            (true, false) => {
-                let start = run_start.take().unwrap_or(x).max(T::ZERO);
-                let end = x.min(width);
+    // Whether the pixels before the current threshold are filled, and
+    // where their run started.
+    let (mut inside, mut start) = (false, T::ZERO);
+    let mut edges = active.iter();
+    let Some(mut edge) = edges.next() else {
+        return Ok(());
+    };
+    let mut x = edge.edge.threshold();
+    loop {
+        winding += i32::from(edge.winding);
+        let next = edges.next().map(|e| (e, e.edge.threshold()));
+        if next.is_none_or(|(_, nx)| nx != x) {
+            // The last edge at `x`: the pixels from `x` on have `winding`.
+            let filled = winding & mask != 0;
+            if filled && !inside {
+                start = x;
+            } else if inside && !filled {
+                let (from, to) = (start.max(T::ZERO), x.min(width));
                 // Inside the frame, so inside the clip: fits i32.
-                if let (true, Some(start), Some(end)) = (start < end, start.to_i32(), end.to_i32())
-                {
-                    emit(Span {
-                        y: frame.origin.y + row,
-                        x_start: frame.origin.x + start,
-                        x_end: frame.origin.x + end,
-                    })?;
+                if let (true, Some(from), Some(to)) = (from < to, from.to_i32(), to.to_i32()) {
+                    emit_columns(frame, row, from, to, emit)?;
                 }
             }
-            _ => {}
+            inside = filled;
+        }
+        match next {
+            Some((e, nx)) => (edge, x) = (e, nx),
+            None => return Ok(()),
         }
     }
-    Ok(())
 }
 
 #[cfg(test)]

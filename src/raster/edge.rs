@@ -176,11 +176,12 @@ impl Edge<i32> {
 pub(crate) const SMALL: i32 = 1 << 19;
 
 impl<T: Wide> Edge<T> {
-    /// `ceil(x(y))` on the current row, in raw units: edges meeting at a
-    /// row compare by it.
+    /// `ceil(x(y))` on the current row, in raw units, plus a constant
+    /// (4095): edges crossing a row are ordered by it, with no
+    /// subtraction.
     #[inline(always)]
-    pub(crate) fn crossing(&self) -> T {
-        self.biased - bias()
+    pub(crate) fn crossing_key(&self) -> T {
+        self.biased
     }
 
     /// The threshold column on the current row: columns from it on lie
