@@ -10,12 +10,12 @@
 //!
 //! A polygon borrows its vertices and is closed implicitly (the last vertex
 //! connects to the first); it may be concave and may cross itself. Its edge
-//! table and active edge list live in `heapless` storage on the stack whose
-//! capacity `N` (vertices) the caller picks: a [`Polygon<N>`](Polygon) of
-//! more than `N` vertices cannot be made, so drawing never runs out of room.
-//! The storage is at most 60 bytes per vertex of capacity on a 32-bit
-//! target (a 56-byte edge record for edges stepped in `i64`, 32 for those
-//! in `i32`, and a `usize` slot in the active list).
+//! table (the active edges kept at its front) lives in `heapless` storage
+//! on the stack whose capacity `N` (vertices) the caller picks: a
+//! [`Polygon<N>`](Polygon) of more than `N` vertices cannot be made, so
+//! drawing never runs out of room. The storage is one edge record per
+//! vertex of capacity: 56 bytes for edges stepped in `i64`, 32 for those
+//! in `i32`.
 //!
 //! Pixels follow the crate's sampling rule, as triangles do: a pixel is lit
 //! iff its centre nudged by `(e, e^2)` has a non-zero winding number
