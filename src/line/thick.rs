@@ -10,8 +10,10 @@
 //! e = (dx, dy) / (2 len),   n = (-dy, dx) w / (2 len),   len = sqrt(dx^2 + dy^2)
 //! ```
 //!
-//! rounded to the nearest 1/4096 px (exactly, in integers: `u128::isqrt`),
-//! and it is filled as a convex polygon under the crate's sampling rule:
+//! rounded to the nearest 1/4096 px (exactly, in integers: a division and
+//! an integer square root for each of the four, in 64 bits while `dx w`
+//! and `dy w` stay under 2^20, any line on a screen, in 128 bits past
+//! that), and it is filled as a convex polygon under the crate's sampling rule:
 //! two chains of edges from its top corner to its bottom one, one span a
 //! row (the two triangles sharing its diagonal light the same pixels, in
 //! two spans a row). A zero-length thick line is the `w x w` square
@@ -27,7 +29,11 @@
 
 use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 
-use crate::{clip::Bounds, raster::wide::div_sqrt, vertex::Vertex, vertex::ONE};
+use crate::{
+    clip::Bounds,
+    raster::wide::{div_sqrt, div_sqrt_u64},
+    vertex::{Vertex, ONE},
+};
 
 /// Widths above this are drawn as this width.
 pub(crate) const MAX_WIDTH: u32 = 65535;
@@ -41,20 +47,31 @@ pub(crate) fn corners(
     width: u32,
     clip: &Rectangle,
 ) -> Option<[Vertex; 4]> {
-    let w = i128::from(width.min(MAX_WIDTH));
-    let centre = |p: Point| (i128::from(p.x) * 4096 + 2048, i128::from(p.y) * 4096 + 2048);
-    let (mut p0, mut p1) = (centre(start), centre(end));
+    // In i64: centres within 2^43 raw units, offsets within 2^27, every
+    // difference of two `i32` points within 2^32.
+    let w = i64::from(width.min(MAX_WIDTH));
+    let centre = |p: Point| (i64::from(p.x) * 4096 + 2048, i64::from(p.y) * 4096 + 2048);
     // In pixels: the ratios below do not depend on the unit.
     let (dx, dy) = (
-        i128::from(end.x) - i128::from(start.x),
-        i128::from(end.y) - i128::from(start.y),
+        i64::from(end.x) - i64::from(start.x),
+        i64::from(end.y) - i64::from(start.y),
     );
     let (e, n) = if dx == 0 && dy == 0 {
         ((w * 2048, 0), (0, w * 2048))
     } else {
-        let len2 = dx * dx + dy * dy;
-        let scaled = |d: i128, f: i128| {
-            d.signum() * div_sqrt(d.unsigned_abs() * f.unsigned_abs(), len2.unsigned_abs())
+        // |dx|, |dy| <= 2^32 - 1: their squares' sum fits u128, and u64
+        // below 2^31 each (any line on a screen).
+        let (ax, ay) = (dx.unsigned_abs(), dy.unsigned_abs());
+        let len2 = u128::from(ax * ax) + u128::from(ay * ay);
+        // round(|d| f / len), with the sign of d; |d| f < 2^32 2^27 = 2^59,
+        // and so is the result.
+        let scaled = |d: i64, f: i64| {
+            let a = d.unsigned_abs() * f.unsigned_abs();
+            let r = match u64::try_from(len2) {
+                Ok(len2) => div_sqrt_u64(a, len2),
+                Err(_) => u64::try_from(div_sqrt(a.into(), len2)).unwrap_or_default(),
+            };
+            d.signum() * i64::try_from(r).unwrap_or_default()
         };
         // e = (dx, dy) * 2048 / len and n = (-dy, dx) * w * 2048 / len, raw.
         (
@@ -62,7 +79,7 @@ pub(crate) fn corners(
             (-scaled(dy, 2048 * w), scaled(dx, 2048 * w)),
         )
     };
-    let corners = |p0: (i128, i128), p1: (i128, i128)| {
+    let corners = |p0: (i64, i64), p1: (i64, i64)| {
         [
             (p0.0 - e.0 + n.0, p0.1 - e.1 + n.1),
             (p1.0 + e.0 + n.0, p1.1 + e.1 + n.1),
@@ -70,16 +87,20 @@ pub(crate) fn corners(
             (p0.0 - e.0 - n.0, p0.1 - e.1 - n.1),
         ]
     };
-    let vertex = |(x, y): (i128, i128)| {
+    let vertex = |(x, y): (i64, i64)| {
         Some(Vertex::from_raw(
             i32::try_from(x).ok()?,
             i32::try_from(y).ok()?,
         ))
     };
+    let (p0, p1) = (centre(start), centre(end));
     let mut v = corners(p0, p1).map(vertex);
     if v.iter().any(Option::is_none) {
-        (p0, p1) = cut(p0, p1, w, clip)?;
-        v = corners(p0, p1).map(vertex);
+        let wide = |p: (i64, i64)| (i128::from(p.0), i128::from(p.1));
+        // The cut points lie within the 20.12 range: they fit i64.
+        let narrow = |p: (i128, i128)| Some((i64::try_from(p.0).ok()?, i64::try_from(p.1).ok()?));
+        let (c0, c1) = cut(wide(p0), wide(p1), i128::from(w), clip)?;
+        v = corners(narrow(c0)?, narrow(c1)?).map(vertex);
     }
     let [Some(a), Some(b), Some(c), Some(d)] = v else {
         return None;
