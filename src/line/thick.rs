@@ -31,7 +31,7 @@ use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 
 use crate::{
     clip::Bounds,
-    raster::wide::{div_sqrt, div_sqrt_u64},
+    raster::wide::div_sqrt,
     vertex::{Vertex, ONE},
 };
 
@@ -59,19 +59,14 @@ pub(crate) fn corners(
     let (e, n) = if dx == 0 && dy == 0 {
         ((w * 2048, 0), (0, w * 2048))
     } else {
-        // |dx|, |dy| <= 2^32 - 1: their squares' sum fits u128, and u64
-        // below 2^31 each (any line on a screen).
+        // |dx|, |dy| <= 2^32 - 1: each square fits u64, their sum u128.
         let (ax, ay) = (dx.unsigned_abs(), dy.unsigned_abs());
         let len2 = u128::from(ax * ax) + u128::from(ay * ay);
         // round(|d| f / len), with the sign of d; |d| f < 2^32 2^27 = 2^59,
         // and so is the result.
         let scaled = |d: i64, f: i64| {
-            let a = d.unsigned_abs() * f.unsigned_abs();
-            let r = match u64::try_from(len2) {
-                Ok(len2) => div_sqrt_u64(a, len2),
-                Err(_) => u64::try_from(div_sqrt(a.into(), len2)).unwrap_or_default(),
-            };
-            d.signum() * i64::try_from(r).unwrap_or_default()
+            let a = u128::from(d.unsigned_abs() * f.unsigned_abs());
+            d.signum() * i64::try_from(div_sqrt(a, len2)).unwrap_or_default()
         };
         // e = (dx, dy) * 2048 / len and n = (-dy, dx) * w * 2048 / len, raw.
         (

@@ -227,29 +227,16 @@ pub(crate) fn round_div(n: i128, d: i128) -> i128 {
 /// `round(a / sqrt(len2))` (`len2 > 0`, halves up), exactly: with `t =
 /// floor(2 a / sqrt(len2)) = isqrt(floor(4 a^2 / len2))`, the nearest
 /// integer is `ceil(t / 2)`. The callers keep `a < 2^59`, so `4 a^2 <
-/// 2^120`; in 64 bits when the operands fit (any stroke on a screen).
+/// 2^120`. In 64 bits when `a < 2^31` (then `4 a^2 < 2^64`) and `len2`
+/// fits, which any thick line or stroke on a screen meets: tested on
+/// `a` first, so that no 128-bit product is taken for it (a Cortex-M4
+/// multiplies `u128` through a library call).
 pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
-    if let (Ok(a), Ok(len2)) = (u64::try_from(a), u64::try_from(len2)) {
-        return i128::from(div_sqrt_u64(a, len2));
-    }
-    let t = (4 * a * a / len2).isqrt();
+    let t = match (u64::try_from(a), u64::try_from(len2)) {
+        (Ok(a), Ok(len2)) if a < 1 << 31 => u128::from((4 * a * a / len2).isqrt()),
+        _ => (4 * a * a / len2).isqrt(),
+    };
     i128::try_from(t.div_ceil(2)).unwrap_or_default()
-}
-
-/// [`div_sqrt`] for 64-bit operands (`len2 > 0`, `a < 2^63`, so that `4
-/// a^2 < 2^128`): in 64 bits when `a < 2^31` (then `4 a^2 < 2^64`), in
-/// 128 otherwise. The result is at most `a`. Past its bound (no caller
-/// goes there) it saturates rather than overflow.
-pub(crate) fn div_sqrt_u64(a: u64, len2: u64) -> u64 {
-    if a < 1 << 31 {
-        return (4 * a * a / len2).isqrt().div_ceil(2);
-    }
-    let square = u128::from(a) * u128::from(a);
-    let t = square
-        .checked_mul(4)
-        .and_then(|n| n.checked_div(u128::from(len2)))
-        .map_or(u128::MAX, u128::isqrt);
-    u64::try_from(t.div_ceil(2)).unwrap_or(u64::MAX)
 }
 
 #[cfg(test)]
@@ -323,7 +310,7 @@ mod tests {
         assert_eq!(orientation::<i32>((0, 0), (1, 1), (2, 2)), 0);
     }
 
-    /// `div_sqrt` and `div_sqrt_u64` against the defining inequalities
+    /// `div_sqrt` against the defining inequalities
     /// of `r = round(a / sqrt(len2))`, halves up: `(2 r - 1)^2 len2 <= 4
     /// a^2 < (2 r + 1)^2 len2` (for `r = 0`, only the right one), checked
     /// in `u128` with no square root, on both sides of the 64-bit path's
@@ -331,9 +318,9 @@ mod tests {
     #[test]
     fn rounded_quotients_of_square_roots() {
         let check = |a: u64, len2: u64| {
-            let r = div_sqrt_u64(a, len2);
-            assert_eq!(div_sqrt(a.into(), len2.into()), i128::from(r), "{a} {len2}");
-            let (a, len2, r) = (u128::from(a), u128::from(len2), u128::from(r));
+            let r = div_sqrt(a.into(), len2.into());
+            let (a, len2) = (u128::from(a), u128::from(len2));
+            let r = u128::try_from(r).expect("not negative");
             let four = 4 * a * a;
             assert!(
                 four < (2 * r + 1).pow(2) * len2,
