@@ -14,7 +14,10 @@
 //!    `.ci/icount`'s "3 px wide" lines): its corners, then its rows;
 //! 5. an 18 px hexagon (`.ci/icount`'s hexagons): the monotone test and
 //!    the two chains of edges;
-//! 6. `.ci/icount`'s pentagram, 220 px, even-odd: the active edge table.
+//! 6. `.ci/icount`'s pentagram, 220 px, even-odd: the active edge table;
+//! 7. a polyline of 21 points in a zigzag, 8 px wide with mitred joins
+//!    (the host bench's, `benches/lines.rs`): its pieces walked in tiles;
+//! 8. the same 20 segments drawn as separate thick lines.
 //!
 //! Built for the host, it does nothing.
 
@@ -33,8 +36,9 @@ mod target {
     use core::hint::black_box;
 
     use cortex_m_rt::entry;
+    use embedded_graphics_core::geometry::Point;
     use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
-    use embedded_raster::{Span, SpanDrawable, Triangle};
+    use embedded_raster::{Join, Line, Polyline, Span, SpanDrawable, Triangle};
 
     use super::builtin_scene::{irregular, SceneBuffer, SCREEN};
 
@@ -91,6 +95,29 @@ mod target {
             .with_rule(embedded_raster::FillRule::EvenOdd);
         begin();
         let Ok(()) = black_box(&poly).draw_spans(black_box(FB));
+        end();
+        // The host bench's zigzag (`benches/lines.rs`): 21 points, 8 px
+        // wide, mitred; then its 20 segments as separate thick lines.
+        let zigzag: [Point; 21] = core::array::from_fn(|k| {
+            let k = k as i32;
+            Point::new(10 + k * 14, if k % 2 == 0 { 30 } else { 210 })
+        });
+        let stroke = Polyline::new(&zigzag)
+            .stroke(Rgb565::RED)
+            .stroke_width(8)
+            .join(Join::Miter);
+        begin();
+        let Ok(()) = black_box(&stroke).draw_spans(black_box(FB));
+        end();
+        let lines: [_; 20] = core::array::from_fn(|k| {
+            Line::new(zigzag[k], zigzag[k + 1])
+                .stroke(Rgb565::RED)
+                .stroke_width(8)
+        });
+        begin();
+        for line in black_box(&lines) {
+            let Ok(()) = black_box(line).draw_spans(black_box(FB));
+        }
         end();
         super::semihosting::exit_success()
     }

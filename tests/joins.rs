@@ -388,6 +388,42 @@ proptest! {
     }
 }
 
+proptest! {
+    /// The stroke is drawn in tiles of at most 8,192 px across, as many
+    /// rows a tile as a 1 KiB mask holds. On a display 8,300 px wide, a
+    /// polyline from x = -100 has tiles 8,192 px wide and one row tall
+    /// from x = 0, then 108 px wide and 75 rows tall: the same polyline,
+    /// moved by whole pixels so that its turns straddle x = 8,192,
+    /// lights the same pixels there, each once, as on the small display
+    /// (one tile).
+    #[test]
+    fn tiles_change_nothing(
+        points in prop::collection::vec((-8i32..80, -8i32..80).prop_map(|(x, y)| Point::new(x, y)), 1..6),
+        far_y in -20i32..100,
+        width in 2u32..=30,
+        join in any_join(),
+    ) {
+        let shift = Point::new(8192 - 36, 0);
+        let far = Point::new(-100, far_y);
+        let small: Vec<Point> = Some(far - shift).into_iter().chain(points.iter().copied()).collect();
+        let moved: Vec<Point> = small.iter().map(|&p| p + shift).collect();
+        let small = draw_polyline(&small, width, join);
+        let mut wide = SimDisplay::new(8300, SIZE, Gray8::BLACK);
+        Polyline::new(&moved).stroke(Gray8::WHITE).stroke_width(width).join(join).draw(&mut wide).unwrap();
+        for y in 0..SIZE as i32 {
+            for x in 0..SIZE as i32 {
+                let p = Point::new(x, y);
+                prop_assert_eq!(wide.write_count(p + shift), small.write_count(p), "{:?}", p);
+            }
+        }
+        for y in 0..SIZE as i32 {
+            for x in 0..8300 {
+                prop_assert!(wide.write_count(Point::new(x, y)).unwrap() <= 1, "({}, {})", x, y);
+            }
+        }
+    }
+}
+
 /// A comb whose middle rows cross over 64 pieces (more than the row
 /// buffer holds): merged by passes instead, still exact and once.
 #[test]

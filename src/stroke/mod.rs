@@ -62,8 +62,15 @@ use embedded_graphics_core::{
     primitives::Rectangle,
 };
 
-use crate::{clip::Bounds, raster::sink::SpanSink, span::Span, vertex::Vertex};
+use crate::{
+    clip::Bounds,
+    polygon::monotone::{monotone_spans, Shape},
+    raster::sink::SpanSink,
+    span::Span,
+    vertex::Vertex,
+};
 use pieces::{Piece, Pt, Segment};
+use row::{Mask, Tile, MASK_BITS, MASK_WORDS};
 
 /// How a thick stroke turns a corner: the shape filling the wedge the two
 /// segments leave on the outside of the turn.
@@ -292,30 +299,61 @@ impl<'a> Stroke<'a> {
     }
 
     /// Writes the stroke's pixels into `sink`, each once.
+    ///
+    /// The stroke's box inside the clip is cut into tiles of at most
+    /// [`MASK_WORDS`] 32-pixel words; in each, every piece that can reach
+    /// it writes the pixels of its own that no piece wrote before,
+    /// marked in the tile's mask. A polygon piece whose corners are 20.12
+    /// vertices is walked by the raster core (two chains of edges,
+    /// stepped a row at a time); a round join's disk sector, or a piece
+    /// out of that range, is found row by row ([`row::interval`]).
     pub fn draw<C: Copy, S: SpanSink<C>>(&self, color: C, sink: &mut S) -> Result<(), S::Error> {
         let clip = Bounds::of(&sink.bounds());
-        let Some(rows) = self.rows(&clip) else {
+        let (Some(rows), Some(columns)) = (self.rows(&clip), self.columns(&clip)) else {
             return Ok(());
         };
         let ends = self.ends();
         let mut offsets = Offsets::new();
-        for j in rows {
-            let Ok(y) = i32::try_from(j) else {
-                break;
-            };
-            // |j| < 2^32: the sample fits i64.
-            let sample = j * 4096 + 2048;
-            let py = i128::from(sample);
-            row::union(
-                |f| {
-                    self.for_each_piece(py, ends, &mut offsets, &mut |piece: &Piece| {
-                        if let Some((lo, hi)) = row::interval(piece, sample) {
-                            f(lo.clamp(clip.x0, clip.x1), hi.clamp(clip.x0, clip.x1));
-                        }
-                    })
-                },
-                |x0, x1| emit(sink, y, x0, x1, color),
-            )?;
+        let mut mask = Mask::new();
+        let mut x0 = columns.start;
+        while x0 < columns.end {
+            let x1 = columns.end.min(x0 + MASK_BITS);
+            // Words a row of the tile: 1..=MASK_WORDS.
+            let stride = (x1 - x0 + 31) / 32;
+            let tall = i64::try_from(MASK_WORDS).unwrap_or(1) / stride.max(1);
+            let mut y0 = rows.start;
+            while y0 < rows.end {
+                let y1 = rows.end.min(y0 + tall);
+                let tile = Tile {
+                    x0,
+                    x1,
+                    y0,
+                    y1,
+                    stride,
+                };
+                mask.clear(&tile);
+                // Row samples within 2^33 of the origin: no overflow.
+                let samples = (
+                    i128::from(y0 * 4096 + 2048),
+                    i128::from((y1 - 1) * 4096 + 2048),
+                );
+                let mut result = Ok(());
+                self.for_each_piece(samples, ends, &mut offsets, &mut |piece: &Piece| {
+                    if result.is_ok() {
+                        result = piece_spans(piece, &tile, &mut |y, lo, hi| {
+                            // A row past `i32` (of a clip that reaches
+                            // there) has no pixels a span can name.
+                            let Ok(row) = i32::try_from(y) else {
+                                return Ok(());
+                            };
+                            mask.write_unset(&tile, y, lo, hi, |a, b| emit(sink, row, a, b, color))
+                        });
+                    }
+                });
+                result?;
+                y0 = y1;
+            }
+            x0 = x1;
         }
         Ok(())
     }
@@ -351,24 +389,43 @@ impl<'a> Stroke<'a> {
         (first < end).then_some(first..end)
     }
 
-    /// Calls `f` with every piece that can cross the row sample `py`.
+    /// The columns of `clip` the stroke can light.
+    fn columns(&self, clip: &Bounds) -> Option<core::ops::Range<i64>> {
+        let n = self.outline.len();
+        let (lo, hi) = (0..n)
+            .map(|k| self.outline.at(k).0)
+            .fold((i128::MAX, i128::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)));
+        if lo > hi {
+            return None;
+        }
+        let first = -((-(lo - self.reach() - 2048)).div_euclid(4096));
+        let last = (hi + self.reach() - 2048).div_euclid(4096);
+        let first = i64::try_from(first.max(clip.x0.into())).ok()?;
+        let end = i64::try_from((last + 1).min(clip.x1.into())).ok()?;
+        (first < end).then_some(first..end)
+    }
+
+    /// Calls `f` with every piece that can cross a row sample in
+    /// `py.0..=py.1`.
     fn for_each_piece(
         &self,
-        py: i128,
+        py: (i128, i128),
         ends: Option<(usize, usize)>,
         offsets: &mut Offsets,
         f: &mut dyn FnMut(&Piece),
     ) {
         let w = self.width;
+        // Whether a row sample in `py` lies within `reach` of `y0..=y1`.
+        let near = |y0: i128, y1: i128, reach: i128| {
+            py.1 >= y0.min(y1) - reach && py.0 <= y0.max(y1) + reach
+        };
         let Some((first, last)) = ends else {
             let p = self.outline.at(0);
-            if (py - p.1).abs() <= self.reach() {
+            if near(p.1, p.1, self.reach()) {
                 pieces::square(p, w, f);
             }
             return;
         };
-        let near =
-            |y0: i128, y1: i128, reach: i128| py >= y0.min(y1) - reach && py <= y0.max(y1) + reach;
         let open = !self.closed;
         let side = 2048 * w + 4096;
         let mut prev: Option<(usize, Segment)> = None;
@@ -401,17 +458,17 @@ impl<'a> Stroke<'a> {
     }
 
     /// The join where segment `s0` ends and `s1` starts (with their
-    /// indices), if it can cross `py`.
+    /// indices), if it can cross a row sample in `py.0..=py.1`.
     fn join_at(
         &self,
-        py: i128,
+        py: (i128, i128),
         (k0, s0): (usize, Segment),
         (k1, s1): (usize, Segment),
         offsets: &mut Offsets,
         f: &mut dyn FnMut(&Piece),
     ) {
         let p = s1.a;
-        if (py - p.1).abs() > self.reach() {
+        if py.1 < p.1 - self.reach() || py.0 > p.1 + self.reach() {
             return;
         }
         let n0 = offsets.get(k0, &s0, self.width);
@@ -450,6 +507,46 @@ impl Offsets {
         }
         (i128::from(slot.1[0]), i128::from(slot.1[1]))
     }
+}
+
+/// Calls `emit` with the row, start and end of each run of `tile` pixels
+/// `piece` lights: a polygon of 20.12 corners walked by the raster core
+/// ([`monotone_spans`]: a convex piece is y-monotone), anything else row
+/// by row through [`row::interval`].
+fn piece_spans<E>(
+    piece: &Piece,
+    tile: &Tile,
+    emit: &mut impl FnMut(i64, i64, i64) -> Result<(), E>,
+) -> Result<(), E> {
+    if let Some(vertices) = piece.vertices() {
+        let clip = Bounds {
+            x0: tile.x0,
+            y0: tile.y0,
+            x1: tile.x1,
+            y1: tile.y1,
+        }
+        .to_rectangle();
+        let walked = monotone_spans(vertices, Shape::Polygon, &clip, &mut |s: Span| {
+            emit(s.y.into(), s.x_start.into(), s.x_end.into())
+        });
+        if let Some(result) = walked {
+            return result;
+        }
+    }
+    // The rows whose samples 4096 j + 2048 lie in the piece's extent.
+    let (lo, hi) = piece.ys;
+    let first = (lo.saturating_sub(2048) / 4096 - 1).max(tile.y0);
+    let end = (hi.saturating_sub(2048) / 4096 + 2).min(tile.y1);
+    for j in first..end {
+        // |j| < 2^32: the sample fits i64.
+        if let Some((a, b)) = row::interval(piece, j * 4096 + 2048) {
+            let (a, b) = (a.clamp(tile.x0, tile.x1), b.clamp(tile.x0, tile.x1));
+            if a < b {
+                emit(j, a, b)?;
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Writes the pixels `x0..x1` of row `y` (inside the sink's bounds).

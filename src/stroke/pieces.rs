@@ -35,7 +35,10 @@
 //! the opposite direction (a full reversal), the half-plane ahead.
 
 use super::{Join, MITER_LIMIT};
-use crate::raster::wide::{div_sqrt, round_div};
+use crate::{
+    raster::wide::{div_sqrt, round_div},
+    vertex::Vertex,
+};
 
 /// A point in raw 20.12 units.
 pub(crate) type Pt = (i128, i128);
@@ -63,12 +66,19 @@ pub(crate) struct Plane {
 }
 
 /// A convex piece: the intersection of up to four half-planes and, for a
-/// round join, a disk (centre, squared radius).
+/// round join, a disk (centre, squared radius). A polygon also keeps its
+/// corners, which the raster core walks when they are 20.12 vertices.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Piece {
     planes: [Plane; 4],
     count: usize,
     pub disk: Option<((i64, i64), i64)>,
+    /// A polygon's corners in order (`corner_count` of them), `None`
+    /// unless every one fits `i32` raw units.
+    corners: Option<[Vertex; 4]>,
+    corner_count: usize,
+    /// The lowest and highest `y` (raw) of the piece, or beyond.
+    pub ys: (i64, i64),
 }
 
 /// `p` in `i64`; `None` never happens for a stroke's points (below
@@ -81,6 +91,11 @@ impl Piece {
     /// The half-planes.
     pub fn planes(&self) -> &[Plane] {
         &self.planes[..self.count]
+    }
+
+    /// A polygon's corners as vertices, if they all fit the 20.12 range.
+    pub fn vertices(&self) -> Option<&[Vertex]> {
+        self.corners.as_ref()?.get(..self.corner_count)
     }
 
     /// Calls `f` with the convex polygon through `v` (3 or 4 vertices in
@@ -109,6 +124,26 @@ impl Piece {
         if o == 0 {
             return None;
         }
+        let (lo, hi) = v.iter().fold((i128::MAX, i128::MIN), |(lo, hi), p| {
+            (lo.min(p.1), hi.max(p.1))
+        });
+        self.ys = narrow((lo, hi))?;
+        // The corners as vertices, if each fits the 20.12 range.
+        let vertex = |p: &Pt| {
+            Some(Vertex::from_raw(
+                i32::try_from(p.0).ok()?,
+                i32::try_from(p.1).ok()?,
+            ))
+        };
+        let mut corners = Some([Vertex::default(); 4]);
+        for (k, p) in v.iter().enumerate() {
+            match (corners.as_mut().and_then(|c| c.get_mut(k)), vertex(p)) {
+                (Some(slot), Some(p)) => *slot = p,
+                _ => corners = None,
+            }
+        }
+        self.corners = corners;
+        self.corner_count = v.len();
         let next = v.iter().skip(1).chain(Some(&first));
         for (&from, &to) in v.iter().zip(next) {
             let d = sub(to, from);
@@ -141,7 +176,11 @@ impl Piece {
                 o: o.signum() as i8,
             });
         }
-        self.disk = Some((c, i64::try_from(r2).ok()?));
+        let r2 = i64::try_from(r2).ok()?;
+        self.disk = Some((c, r2));
+        // Rows beyond the disk's top and bottom cross nothing.
+        let r = r2.isqrt() + 1;
+        self.ys = (c.1 - r, c.1 + r);
         Some(())
     }
 
@@ -156,6 +195,9 @@ impl Piece {
             planes: [none; 4],
             count: 0,
             disk: None,
+            corners: None,
+            corner_count: 0,
+            ys: (i64::MIN, i64::MAX),
         }
     }
 

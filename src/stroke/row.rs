@@ -1,5 +1,7 @@
-//! One row of a stroke: the columns each convex piece lights, exactly, and
-//! their union, so that a pixel covered by several pieces is written once.
+//! One row of a stroke: the columns a convex piece lights, exactly, found
+//! directly (for a round join's disk sector, or a piece out of the 20.12
+//! range), and the mask that lets each pixel covered by several pieces be
+//! written once.
 //!
 //! Coordinates are raw 20.12 units (absolute, not relative to a frame): a
 //! stroke's pieces lie within `2^46` raw units of the origin (any `i32`
@@ -121,82 +123,120 @@ fn disk_interval(c: (i64, i64), r2: i64, py: i64) -> Option<(i64, i64)> {
     (lo < hi).then_some((lo, hi))
 }
 
-/// Intervals of one row kept on the stack in one pass.
-const BUFFERED: usize = 64;
+/// 32-bit words of a tile's mask: 1 KiB on the stack, a bit a pixel (a
+/// tile is up to 8,192 px wide, and as many rows as fit).
+pub(crate) const MASK_WORDS: usize = 256;
 
-/// Emits the union of the intervals `visit` reports (each `lo..hi`, any
-/// order, empty ones ignored) as disjoint spans from left to right.
-///
-/// Each pass over the pieces keeps, sorted, the [`BUFFERED`] intervals
-/// (1 KiB) that start first at or after `cur`, clipped to start there,
-/// and notes `lim`, the first start it had to leave out. Every interval
-/// starting before `lim` was kept, so the union is exact on `cur..lim`:
-/// that part is emitted and the next pass starts at `lim`. A row crossed
-/// by at most `BUFFERED` pieces takes one pass; more take about one pass
-/// per `BUFFERED` of them (a span may then be emitted in touching parts).
-/// If every kept interval starts at `lim` (more than `BUFFERED` start
-/// there), the pass emits from `lim` up to the nearest of their ends
-/// instead. `cur` grows every pass, so the passes end.
-pub(crate) fn union<E>(
-    mut visit: impl FnMut(&mut dyn FnMut(i64, i64)),
-    mut emit: impl FnMut(i64, i64) -> Result<(), E>,
-) -> Result<(), E> {
-    let mut buf = [(0i64, 0i64); BUFFERED];
-    let mut cur = i64::MIN;
-    loop {
-        let (mut n, mut lim) = (0usize, i64::MAX);
-        visit(&mut |a, b| {
-            if b <= cur || a >= b {
-                return;
-            }
-            let a = a.max(cur);
-            if n == BUFFERED {
-                let last = buf[n - 1].0;
-                if a >= last {
-                    lim = lim.min(a);
-                    return;
-                }
-                lim = lim.min(last);
-                n -= 1;
-            }
-            let mut i = n;
-            while i > 0 && buf[i - 1].0 > a {
-                buf[i] = buf[i - 1];
-                i -= 1;
-            }
-            buf[i] = (a, b);
-            n += 1;
-        });
-        let kept = &buf[..n];
-        let Some(&(first, _)) = kept.first() else {
+/// The widest tile, in pixels.
+pub(crate) const MASK_BITS: i64 = 32 * MASK_WORDS as i64;
+
+/// A rectangle of pixels `x0..x1` by `y0..y1` whose mask rows are
+/// `stride` words apart (`stride (y1 - y0) <= MASK_WORDS`, `x1 - x0 <=
+/// 32 stride`).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Tile {
+    pub x0: i64,
+    pub x1: i64,
+    pub y0: i64,
+    pub y1: i64,
+    pub stride: i64,
+}
+
+/// The pixels of a tile already written, a bit each.
+#[derive(Debug)]
+pub(crate) struct Mask {
+    words: [u32; MASK_WORDS],
+}
+
+impl Mask {
+    pub fn new() -> Self {
+        Self {
+            words: [0; MASK_WORDS],
+        }
+    }
+
+    /// Marks every pixel of `tile` unwritten.
+    pub fn clear(&mut self, tile: &Tile) {
+        let used = usize::try_from(tile.stride * (tile.y1 - tile.y0)).unwrap_or(MASK_WORDS);
+        if let Some(words) = self.words.get_mut(..used) {
+            words.fill(0);
+        }
+    }
+
+    /// Calls `write` with each run of pixels of `x0..x1` in row `y` of
+    /// `tile` (all inside it) not written yet, left to right, and marks
+    /// them written.
+    pub fn write_unset<E>(
+        &mut self,
+        tile: &Tile,
+        y: i64,
+        x0: i64,
+        x1: i64,
+        mut write: impl FnMut(i64, i64) -> Result<(), E>,
+    ) -> Result<(), E> {
+        // Columns within the tile, `0..=32 stride`, and the row's words:
+        // in `usize` from here on.
+        let index = |v: i64| usize::try_from(v).ok();
+        let (Some(start), Some(stride), Some(mut c), Some(end)) = (
+            index((y - tile.y0) * tile.stride),
+            index(tile.stride),
+            index(x0 - tile.x0),
+            index(x1 - tile.x0),
+        ) else {
             return Ok(());
         };
-        if first >= lim {
-            // Every kept interval starts at `first = lim`, and none before:
-            // emit up to the nearest end.
-            let end = kept.iter().map(|&(_, b)| b).min().unwrap_or(first);
-            emit(first, end)?;
-            cur = end;
-            continue;
-        }
-        let mut span: Option<(i64, i64)> = None;
-        for &(a, b) in kept.iter().filter(|&&(a, _)| a < lim) {
-            span = match span {
-                Some((s, e)) if a <= e => Some((s, e.max(b))),
-                Some((s, e)) => {
-                    emit(s, e)?;
-                    Some((a, b))
-                }
-                None => Some((a, b)),
-            };
-        }
-        if let Some((s, e)) = span {
-            emit(s, e.min(lim))?;
-        }
-        if lim == i64::MAX {
+        let Some(row) = self.words.get_mut(start..start + stride) else {
             return Ok(());
+        };
+        while c < end {
+            let from = first_bit(row, c, end, false);
+            if from >= end {
+                break;
+            }
+            let to = first_bit(row, from, end, true);
+            set_bits(row, from, to);
+            // Within the tile's columns: back to i64 exactly.
+            let at = |c: usize| tile.x0 + i64::try_from(c).unwrap_or_default();
+            write(at(from), at(to))?;
+            c = to;
         }
-        cur = lim;
+        Ok(())
+    }
+}
+
+/// The first column in `from..end` (within `row`'s bits) whose bit is
+/// `set`, or `end`.
+#[inline(always)]
+fn first_bit(row: &[u32], from: usize, end: usize, set: bool) -> usize {
+    let mut at = from;
+    while at < end {
+        let Some(&word) = row.get(at / 32) else {
+            return end;
+        };
+        let word = if set { word } else { !word };
+        // The bits from `at` on in this word.
+        let bits = word >> (at % 32);
+        if bits != 0 {
+            return end.min(at + bits.trailing_zeros() as usize);
+        }
+        at += 32 - at % 32;
+    }
+    end
+}
+
+/// Sets the bits of columns `from..to` in `row`.
+#[inline(always)]
+fn set_bits(row: &mut [u32], from: usize, to: usize) {
+    let mut at = from;
+    while at < to {
+        let bit = at % 32;
+        let n = (to - at).min(32 - bit);
+        // n bits from `bit`: 1..=32 of them.
+        let ones = u32::MAX >> (32 - n) << bit;
+        if let Some(word) = row.get_mut(at / 32) {
+            *word |= ones;
+        }
+        at += n;
     }
 }
 
@@ -204,55 +244,53 @@ pub(crate) fn union<E>(
 mod tests {
     use super::*;
 
-    /// The pixels of `0..128` the union emits, checking that no pixel is
-    /// emitted twice.
-    fn pixels(visit: impl FnMut(&mut dyn FnMut(i64, i64))) -> u128 {
-        let mut set = 0u128;
-        union(visit, |a, b| {
-            for x in a..b {
-                assert!(set & (1 << x) == 0, "pixel {x} twice");
-                set |= 1 << x;
-            }
-            Ok::<(), ()>(())
-        })
-        .unwrap();
-        set
-    }
-
-    /// The union over many passes (copies and shifted copies past the
-    /// buffer) equals the plain union.
+    /// `write_unset` against a plain array of flags: random runs in a
+    /// tile 3 words wide and 2 rows tall, across word boundaries, each
+    /// pixel written once and exactly the runs' union written.
     #[test]
-    fn passes_match_the_plain_union() {
-        let sets: [&[(i64, i64)]; 4] = [
-            &[(0, 3), (2, 5), (7, 9), (9, 10), (12, 12), (4, 6)],
-            &[(5, 6), (0, 1), (1, 2), (40, 63)],
-            &[(3, 60)],
-            &[],
-        ];
-        for set in sets {
-            let want = set
-                .iter()
-                .flat_map(|&(a, b)| a..b)
-                .fold(0u128, |m, x| m | 1 << x);
-            assert_eq!(pixels(|f| set.iter().for_each(|&(a, b)| f(a, b))), want);
-            // 3 x BUFFERED copies: all start together, the nearest-end rule.
-            let many = |f: &mut dyn FnMut(i64, i64)| {
-                for _ in 0..3 * BUFFERED {
-                    set.iter().for_each(|&(a, b)| f(a, b));
+    fn masked_runs_write_each_pixel_once() {
+        let tile = Tile {
+            x0: -40,
+            x1: 50,
+            y0: 7,
+            y1: 9,
+            stride: 3,
+        };
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        for _ in 0..200 {
+            let mut mask = Mask::new();
+            mask.clear(&tile);
+            let mut written = [[0u8; 90]; 2];
+            let mut want = [[false; 90]; 2];
+            for _ in 0..12 {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                let row = 7 + (x % 2) as i64;
+                let (a, b) = ((x >> 8) % 91, (x >> 20) % 91);
+                let (a, b) = (a.min(b) as i64 - 40, a.max(b) as i64 - 40);
+                for c in a..b {
+                    want[(row - 7) as usize][(c + 40) as usize] = true;
                 }
-            };
-            assert_eq!(pixels(many), want);
-            // Shifted and shortened copies: many distinct starts.
-            let shifted = |f: &mut dyn FnMut(i64, i64)| {
-                for k in 0..3 * BUFFERED as i64 {
-                    set.iter().for_each(|&(a, b)| f(a + k % 3, b - k % 2));
+                let mut last = i64::MIN;
+                mask.write_unset(&tile, row, a, b, |s, e| {
+                    assert!(
+                        a <= s && s < e && e <= b && s > last,
+                        "{s}..{e} in {a}..{b}"
+                    );
+                    last = e;
+                    for c in s..e {
+                        written[(row - 7) as usize][(c + 40) as usize] += 1;
+                    }
+                    Ok::<(), ()>(())
+                })
+                .unwrap();
+            }
+            for (w, r) in written.iter().zip(&want) {
+                for (&n, &lit) in w.iter().zip(r) {
+                    assert_eq!(n, u8::from(lit));
                 }
-            };
-            let want = (0..3 * BUFFERED as i64)
-                .flat_map(|k| set.iter().map(move |&(a, b)| (a + k % 3, b - k % 2)))
-                .flat_map(|(a, b)| a..b)
-                .fold(0u128, |m, x| m | 1 << x);
-            assert_eq!(pixels(shifted), want);
+            }
         }
     }
 }
