@@ -424,10 +424,10 @@ proptest! {
     }
 }
 
-/// A comb whose middle rows cross over 64 pieces (more than the row
-/// buffer holds): merged by passes instead, still exact and once.
+/// A comb whose middle rows cross over 64 pieces, overlapping at every
+/// joint: still exact and once.
 #[test]
-fn comb_past_the_row_buffer() {
+fn comb_crossing_every_row_64_times() {
     let points: Vec<Point> = (0..90)
         .map(|k| Point::new(-10 + k, if k % 2 == 0 { 10 } else { 60 }))
         .collect();
