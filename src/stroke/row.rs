@@ -188,55 +188,53 @@ impl Mask {
         let Some(row) = self.words.get_mut(start..start + stride) else {
             return Ok(());
         };
+        let at = |c: usize| tile.x0 + i64::try_from(c).unwrap_or_default();
+        // Word by word: mark the span's bits, and carry the unwritten run
+        // that reaches the word's end into the next word.
+        let mut open: Option<usize> = None;
         while c < end {
-            let from = first_bit(row, c, end, false);
-            if from >= end {
+            let (k, lo) = (c / 32, c % 32);
+            let hi = (end - 32 * k).min(32);
+            let Some(word) = row.get_mut(k) else {
                 break;
+            };
+            // Bits lo..hi: 1..=32 of them.
+            let span = u32::MAX >> (32 - (hi - lo)) << lo;
+            let free = !*word & span;
+            *word |= span;
+            if free != span {
+                // Runs start where a free bit follows a written one, end
+                // where a written bit follows a free one.
+                let written = !free & span;
+                let mut pos = lo;
+                loop {
+                    if let Some(s) = open {
+                        let ahead = written >> pos << pos;
+                        if ahead == 0 {
+                            break;
+                        }
+                        let e = ahead.trailing_zeros() as usize;
+                        write(at(s), at(32 * k + e))?;
+                        open = None;
+                        pos = e;
+                    }
+                    let ahead = free >> pos << pos;
+                    if ahead == 0 {
+                        break;
+                    }
+                    let s = ahead.trailing_zeros() as usize;
+                    open = Some(32 * k + s);
+                    pos = s;
+                }
+            } else if open.is_none() {
+                open = Some(c);
             }
-            let to = first_bit(row, from, end, true);
-            set_bits(row, from, to);
-            // Within the tile's columns: back to i64 exactly.
-            let at = |c: usize| tile.x0 + i64::try_from(c).unwrap_or_default();
-            write(at(from), at(to))?;
-            c = to;
+            c = 32 * k + hi;
+        }
+        if let Some(s) = open {
+            write(at(s), at(end))?;
         }
         Ok(())
-    }
-}
-
-/// The first column in `from..end` (within `row`'s bits) whose bit is
-/// `set`, or `end`.
-#[inline(always)]
-fn first_bit(row: &[u32], from: usize, end: usize, set: bool) -> usize {
-    let mut at = from;
-    while at < end {
-        let Some(&word) = row.get(at / 32) else {
-            return end;
-        };
-        let word = if set { word } else { !word };
-        // The bits from `at` on in this word.
-        let bits = word >> (at % 32);
-        if bits != 0 {
-            return end.min(at + bits.trailing_zeros() as usize);
-        }
-        at += 32 - at % 32;
-    }
-    end
-}
-
-/// Sets the bits of columns `from..to` in `row`.
-#[inline(always)]
-fn set_bits(row: &mut [u32], from: usize, to: usize) {
-    let mut at = from;
-    while at < to {
-        let bit = at % 32;
-        let n = (to - at).min(32 - bit);
-        // n bits from `bit`: 1..=32 of them.
-        let ones = u32::MAX >> (32 - n) << bit;
-        if let Some(word) = row.get_mut(at / 32) {
-            *word |= ones;
-        }
-        at += n;
     }
 }
 
