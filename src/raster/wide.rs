@@ -243,6 +243,16 @@ pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
 mod tests {
     use super::*;
 
+    /// A deterministic spread of `u64`s (xorshift64) from `seed`.
+    fn xorshift(seed: u64) -> impl Iterator<Item = u64> {
+        core::iter::successors(Some(seed), |&x| {
+            let x = x ^ (x << 13);
+            let x = x ^ (x >> 7);
+            Some(x ^ (x << 17))
+        })
+        .skip(1)
+    }
+
     #[test]
     fn divisions_in_the_narrowest_width() {
         assert_eq!(i32::div_rem_wide(-7, 2), Some((-4, 1)));
@@ -286,11 +296,7 @@ mod tests {
             }
         }
         // A deterministic spread: every magnitude of n and d, both signs.
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        for _ in 0..20_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+        for x in xorshift(0x9E37_79B9_7F4A_7C15).take(20_000) {
             let n = (x as i64) >> (x % 64);
             let d = (((x >> 8) | 1) >> ((x >> 20) % 63)).max(1) as i64;
             check(n, d);
@@ -347,11 +353,7 @@ mod tests {
         ] {
             check(a, len2);
         }
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
-        for _ in 0..20_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+        for x in xorshift(0x2545_F491_4F6C_DD1D).take(20_000) {
             let a = x >> (5 + x % 40);
             let len2 = ((x >> 3) >> (x % 61)).max(1);
             check(a, len2);

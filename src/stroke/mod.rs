@@ -318,7 +318,8 @@ impl<'a> Stroke<'a> {
     /// out of that range, is found row by row ([`row::interval`]).
     pub fn draw<C: Copy, S: SpanSink<C>>(&self, color: C, sink: &mut S) -> Result<(), S::Error> {
         let clip = Bounds::of(&sink.bounds());
-        let (Some(rows), Some(columns)) = (self.rows(&clip), self.columns(&clip)) else {
+        let rows = self.reach_of(1, clip.y0, clip.y1);
+        let (Some(rows), Some(columns)) = (rows, self.reach_of(0, clip.x0, clip.x1)) else {
             return Ok(());
         };
         let ends = self.ends();
@@ -382,35 +383,21 @@ impl<'a> Stroke<'a> {
         4096 * 2 * self.width + 8192
     }
 
-    /// The rows of `clip` the stroke can light.
-    fn rows(&self, clip: &Bounds) -> Option<core::ops::Range<i64>> {
-        let n = self.outline.len();
-        let (lo, hi) = (0..n)
-            .map(|k| self.outline.at(k).1)
-            .fold((i128::MAX, i128::MIN), |(lo, hi), y| (lo.min(y), hi.max(y)));
-        if lo > hi {
+    /// The rows (`axis` 1) or columns (`axis` 0) of `clip`, `lo..hi`, the
+    /// stroke can light: those whose centres lie within its reach of a
+    /// point.
+    fn reach_of(&self, axis: usize, lo: i64, hi: i64) -> Option<core::ops::Range<i64>> {
+        let coordinate = |p: Pt| if axis == 0 { p.0 } else { p.1 };
+        let (min, max) = (0..self.outline.len())
+            .map(|k| coordinate(self.outline.at(k)))
+            .fold((i128::MAX, i128::MIN), |(a, b), v| (a.min(v), b.max(v)));
+        if min > max {
             return None;
         }
-        let first = -((-(lo - self.reach() - 2048)).div_euclid(4096));
-        let last = (hi + self.reach() - 2048).div_euclid(4096);
-        let first = i64::try_from(first.max(clip.y0.into())).ok()?;
-        let end = i64::try_from((last + 1).min(clip.y1.into())).ok()?;
-        (first < end).then_some(first..end)
-    }
-
-    /// The columns of `clip` the stroke can light.
-    fn columns(&self, clip: &Bounds) -> Option<core::ops::Range<i64>> {
-        let n = self.outline.len();
-        let (lo, hi) = (0..n)
-            .map(|k| self.outline.at(k).0)
-            .fold((i128::MAX, i128::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)));
-        if lo > hi {
-            return None;
-        }
-        let first = -((-(lo - self.reach() - 2048)).div_euclid(4096));
-        let last = (hi + self.reach() - 2048).div_euclid(4096);
-        let first = i64::try_from(first.max(clip.x0.into())).ok()?;
-        let end = i64::try_from((last + 1).min(clip.x1.into())).ok()?;
+        let first = -((-(min - self.reach() - 2048)).div_euclid(4096));
+        let last = (max + self.reach() - 2048).div_euclid(4096);
+        let first = i64::try_from(first.max(lo.into())).ok()?;
+        let end = i64::try_from((last + 1).min(hi.into())).ok()?;
         (first < end).then_some(first..end)
     }
 
