@@ -40,6 +40,10 @@ use crate::{
 pub(crate) enum Shape {
     /// Nothing: it may not be y-monotone.
     Polygon,
+    /// Convex by construction (a stroke's piece), so y-monotone: walked
+    /// as a [`Polygon`](Self::Polygon) that passed the test, with no
+    /// test.
+    Convex,
     /// It is a parallelogram (its corners in order round it, `c[0] + c[2]
     /// = c[1] + c[3]`), so convex, or of no area: a thick line's
     /// rectangle, whose rows are one span each, where its two triangles
@@ -113,7 +117,9 @@ fn walk_monotone<E>(
     Some(match shape {
         // Either chain on either side: the lesser threshold and the greater
         // bound each row.
-        Shape::Polygon => walk_chains::<false, _, _>(frame, chain(true), chain(false), emit),
+        Shape::Polygon | Shape::Convex => {
+            walk_chains::<false, _, _>(frame, chain(true), chain(false), emit)
+        }
         // Coordinates within the bound: the orientation is exact. Of no
         // area, it lights nothing. Clockwise on screen, the forward chain
         // runs down the right side.

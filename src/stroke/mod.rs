@@ -340,6 +340,7 @@ impl<'a> Stroke<'a> {
                     y0,
                     y1,
                     stride,
+                    rectangle: Bounds { x0, y0, x1, y1 }.to_rectangle(),
                 };
                 mask.clear(&tile);
                 let window = Window::of(&tile);
@@ -496,7 +497,7 @@ impl Window {
     }
 }
 
-/// Segments whose offsets are kept between rows.
+/// Segments whose offsets are kept between tiles.
 const CACHED: usize = 64;
 
 /// The offsets `n` of recently used segments, by index modulo [`CACHED`],
@@ -537,14 +538,8 @@ fn piece_spans<E>(
     emit: &mut impl FnMut(i64, i64, i64) -> Result<(), E>,
 ) -> Result<(), E> {
     if let Some(vertices) = piece.vertices() {
-        let clip = Bounds {
-            x0: tile.x0,
-            y0: tile.y0,
-            x1: tile.x1,
-            y1: tile.y1,
-        }
-        .to_rectangle();
-        let walked = monotone_spans(vertices, Shape::Polygon, &clip, &mut |s: Span| {
+        // Convex: no y-monotone test.
+        let walked = monotone_spans(vertices, Shape::Convex, &tile.rectangle, &mut |s: Span| {
             emit(s.y.into(), s.x_start.into(), s.x_end.into())
         });
         if let Some(result) = walked {

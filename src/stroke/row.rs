@@ -9,6 +9,8 @@
 //! widest stroke), stored in `i64`; a product that does not fit 64 bits
 //! is taken in 128, where every one stays below `2^94`.
 
+use embedded_graphics_core::primitives::Rectangle;
+
 use super::pieces::Piece;
 
 /// Raw units per pixel, and half of it (a pixel centre's offset).
@@ -140,6 +142,8 @@ pub(crate) struct Tile {
     pub y0: i64,
     pub y1: i64,
     pub stride: i64,
+    /// The same pixels, for the walk's clip.
+    pub rectangle: Rectangle,
 }
 
 /// The pixels of a tile already written, a bit each.
@@ -253,6 +257,7 @@ mod tests {
             y0: 7,
             y1: 9,
             stride: 3,
+            rectangle: Rectangle::zero(),
         };
         let mut x = 0x9E37_79B9_7F4A_7C15u64;
         for _ in 0..200 {
