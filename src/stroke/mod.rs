@@ -125,12 +125,13 @@ use row::{Mask, Tile, MASK_BITS, MASK_WORDS};
 ///
 /// Measured on the host, 8 px wide on a 320 x 240 framebuffer (`cargo
 /// bench --bench lines -- "thick polyline"`): a 21-point zigzag takes
-/// 0.12 ms and a noisy 320-point trace (each row crossed by about a
-/// hundred segments) 1.1 ms. That is 3.4 and 4.9 times as long as the
-/// same segments drawn as separate thick lines, which overlap and leave
-/// notches, and 15 and 19 times faster than embedded-graphics 0.8's
-/// `Polyline` with the same stroke (1.8 ms and 21 ms). On a Cortex-M4
-/// (`.ci/itrace`) the zigzag takes 1.34 million instructions, its
+/// 92 to 144 µs and a noisy 320-point trace (each row crossed by about a
+/// hundred segments) 0.76 to 1.31 ms, over three runs on a noisy machine.
+/// That is 2.5 to 4.8 times as long as the same segments drawn as
+/// separate thick lines, which overlap and leave notches, and 11 to 30
+/// times faster than embedded-graphics 0.8's `Polyline` with the same
+/// stroke (1.6 to 2.0 ms and 21 to 23 ms), in the same runs. On a Cortex-M4
+/// (`.ci/itrace`) the zigzag takes 1.29 million instructions, its
 /// separate thick lines 0.30 million.
 ///
 /// # Ranges
