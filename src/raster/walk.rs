@@ -89,6 +89,15 @@ pub(crate) fn emit_columns<E>(
 /// on either side, and cross: each row's span runs between the lesser
 /// and the greater threshold (two more selects a row).
 ///
+/// With `LEFT_CLAMP` false, the caller shows that no threshold is
+/// negative (the frame starts at the shape's first column, as
+/// [`Frame::of_small_triangle`] does), and the spans are not clamped on
+/// the left. On x86-64 that is 2 instructions a row fewer (random
+/// triangles drawn by `draw_spans`, instructions counted by callgrind:
+/// small 1,220 a triangle → 1,180, medium 3,989 → 3,857, the mesh 1,090
+/// → 1,056); 32-bit ARM clamps in one instruction and keeps a single copy
+/// of the loop.
+///
 /// Always inlined, into one out-of-line function per shape, defined in
 /// the shape's own module (`triangle_rows`, `chain_rows`): out of line,
 /// the loop has its own registers for the edges and the sink (left to the
@@ -101,7 +110,7 @@ pub(crate) fn emit_columns<E>(
 /// instructions instead of 1,250 (`.ci/icount`), the same code compiled
 /// into other registers.
 #[inline(always)]
-pub(crate) fn rows<const ORDERED: bool, T: Narrow, E>(
+pub(crate) fn rows<const ORDERED: bool, const LEFT_CLAMP: bool, T: Narrow, E>(
     frame: &Frame,
     left: &mut Edge<T>,
     right: &mut Edge<T>,
@@ -122,7 +131,14 @@ pub(crate) fn rows<const ORDERED: bool, T: Narrow, E>(
             true => (tl, tr),
             false => (tl.min(tr), tl.max(tr)),
         };
-        let (x0, x1) = (x0.max(T::ZERO), x1.min(width));
+        let x0 = match LEFT_CLAMP {
+            true => x0.max(T::ZERO),
+            false => {
+                debug_assert!(x0 >= T::ZERO);
+                x0
+            }
+        };
+        let x1 = x1.min(width);
         if x0 < x1 {
             if let (Some(x0), Some(x1)) = (x0.to_i32(), x1.to_i32()) {
                 emit_columns(frame, row, x0, x1, emit)?;
@@ -145,7 +161,7 @@ macro_rules! rows_out_of_line {
     ($(#[$doc:meta])* $name:ident) => {
         $(#[$doc])*
         #[inline(never)]
-        fn $name<const ORDERED: bool, T: $crate::raster::wide::Narrow, E>(
+        fn $name<const ORDERED: bool, const LEFT_CLAMP: bool, T: $crate::raster::wide::Narrow, E>(
             frame: &$crate::raster::frame::Frame,
             left: &mut $crate::raster::edge::Edge<T>,
             right: &mut $crate::raster::edge::Edge<T>,
@@ -153,7 +169,7 @@ macro_rules! rows_out_of_line {
             end: i32,
             emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
         ) -> Result<(), E> {
-            $crate::raster::walk::rows::<ORDERED, T, E>(frame, left, right, from, end, emit)
+            $crate::raster::walk::rows::<ORDERED, LEFT_CLAMP, T, E>(frame, left, right, from, end, emit)
         }
     };
 }
@@ -187,7 +203,7 @@ pub(crate) fn walk_chains<const ORDERED: bool, T: Narrow, E>(
     }
     loop {
         let end = l.last_row.min(r.last_row).min(last);
-        chain_rows::<ORDERED, T, E>(frame, &mut l, &mut r, row, end, emit)?;
+        chain_rows::<ORDERED, true, T, E>(frame, &mut l, &mut r, row, end, emit)?;
         if end >= last {
             return Ok(());
         }

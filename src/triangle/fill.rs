@@ -71,9 +71,17 @@ pub(crate) fn triangle_spans<E>(
         },
     };
     match placed {
-        Some(Placed::Narrow(frame, p, small)) => walk(&frame, p, narrow_edges(small), &mut emit),
+        Some(Placed::Narrow(frame, p, small)) => {
+            // The small frame's relative coordinates are all over -4096
+            // (its origin is the first centre at or after the box's left
+            // side), so every crossing rounds up to column 0 or right of
+            // it: hosts skip the left clamp there (see `rows`). 32-bit ARM
+            // keeps one copy of the row loop (flash).
+            let left_clamp = cfg!(target_arch = "arm") || !small;
+            walk(&frame, p, narrow_edges(small), left_clamp, &mut emit)
+        }
         Some(Placed::Wide(frame)) => match relative::<i64>(&frame, &v) {
-            Some(p) => walk(&frame, p, |a, b| Edge::new(a, b, 0), &mut emit),
+            Some(p) => walk(&frame, p, |a, b| Edge::new(a, b, 0), true, &mut emit),
             // Unreachable: every coordinate fits i64.
             None => Ok(()),
         },
@@ -185,10 +193,22 @@ impl TriangleRows {
                 return Ok(false);
             }
             match self.short_left {
-                true => triangle_rows::<true, _, _>(frame, short, &mut self.long, from, end, emit)?,
-                false => {
-                    triangle_rows::<true, _, _>(frame, &mut self.long, short, from, end, emit)?
-                }
+                true => triangle_rows::<true, true, _, _>(
+                    frame,
+                    short,
+                    &mut self.long,
+                    from,
+                    end,
+                    emit,
+                )?,
+                false => triangle_rows::<true, true, _, _>(
+                    frame,
+                    &mut self.long,
+                    short,
+                    from,
+                    end,
+                    emit,
+                )?,
             }
             self.row = end + 1;
             if end < half_end {
@@ -350,12 +370,16 @@ fn sort_by_y_selecting(v: &mut [Vertex; 3]) {
 }
 
 /// Walks the rows of the frame the triangle `p` (relative, sorted by `y`)
-/// crosses.
+/// crosses; with `left_clamp` false, the caller shows that no threshold
+/// lies left of the frame (see [`rows`]).
+///
+/// [`rows`]: crate::raster::walk::rows
 #[inline(always)]
 fn walk<T: Narrow, E>(
     frame: &Frame,
     p: [(T, T); 3],
     edge: impl Fn((T, T), (T, T)) -> Option<Edge<T>>,
+    left_clamp: bool,
     emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
 ) -> Result<(), E> {
     // Coordinates within the bound: the orientation is exact.
@@ -376,9 +400,15 @@ fn walk<T: Narrow, E>(
     // Each half: the rows of the short edge, between it and the long edge.
     let mut half = |short: &mut Edge<T>, long: &mut Edge<T>| {
         let (from, end) = (short.first_row, short.last_row.min(last));
-        match short_left {
-            true => triangle_rows::<true, _, _>(frame, short, long, from, end, emit),
-            false => triangle_rows::<true, _, _>(frame, long, short, from, end, emit),
+        match (short_left, left_clamp) {
+            (true, true) => triangle_rows::<true, true, _, _>(frame, short, long, from, end, emit),
+            (false, true) => triangle_rows::<true, true, _, _>(frame, long, short, from, end, emit),
+            (true, false) => {
+                triangle_rows::<true, false, _, _>(frame, short, long, from, end, emit)
+            }
+            (false, false) => {
+                triangle_rows::<true, false, _, _>(frame, long, short, from, end, emit)
+            }
         }
         .map(|()| end)
     };
@@ -442,7 +472,7 @@ mod tests {
                 let mut push = by_numbers_ref(&mut push);
                 let _ = match tiny {
                     true => walk_tiny(&frame, p, &mut push),
-                    false => walk(&frame, p, narrow_edges(true), &mut push),
+                    false => walk(&frame, p, narrow_edges(true), false, &mut push),
                 };
                 drop(push);
                 out
