@@ -242,16 +242,7 @@ pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A deterministic spread of `u64`s (xorshift64) from `seed`.
-    fn xorshift(seed: u64) -> impl Iterator<Item = u64> {
-        core::iter::successors(Some(seed), |&x| {
-            let x = x ^ (x << 13);
-            let x = x ^ (x >> 7);
-            Some(x ^ (x << 17))
-        })
-        .skip(1)
-    }
+    use crate::raster::xorshift;
 
     #[test]
     fn divisions_in_the_narrowest_width() {

@@ -1,17 +1,20 @@
 //! One row of a stroke: the columns a convex piece lights, exactly, found
 //! directly (for a round join's disk sector, or a piece out of the 20.12
-//! range), and the mask that lets each pixel covered by several pieces be
-//! written once.
+//! range: each straight side's threshold by the raster core's
+//! [`threshold_on_row`]), and the mask that lets each pixel covered by
+//! several pieces be written once.
 //!
 //! Coordinates are raw 20.12 units (absolute, not relative to a frame): a
 //! stroke's pieces lie within `2^46` raw units of the origin (any `i32`
 //! pixel, `4096 x + 2048`, plus at most `2^29` for a miter tip of the
-//! widest stroke), stored in `i64`; a product that does not fit 64 bits
-//! is taken in 128, where every one stays below `2^94`.
+//! widest stroke), stored in `i64`, within the bound of
+//! [`threshold_on_row`] (`2^62`), which works in `i64` for any stroke on
+//! a screen and in `i128` beyond.
 
 use embedded_graphics_core::primitives::Rectangle;
 
 use super::pieces::Piece;
+use crate::raster::edge::threshold_on_row;
 
 /// Raw units per pixel, and half of it (a pixel centre's offset).
 const ONE: i64 = 4096;
@@ -20,41 +23,6 @@ const HALF: i64 = 2048;
 /// `ceil(n / d)` for `d > 0`, `None` only for `n = i64::MIN`.
 fn ceil_div(n: i64, d: i64) -> Option<i64> {
     Some(-(n.checked_neg()?.div_euclid(d)))
-}
-
-/// `i128` to `i64`, saturating: bounds past the `i64` range act as
-/// unbounded.
-fn saturate(v: i128) -> i64 {
-    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
-}
-
-/// The column `ceil(((a.x - 2048) d.y + d.x (py - a.y)) / (4096 d.y))`
-/// (`d.y != 0`), in 64 bits when the products fit (any stroke on a
-/// screen), else in 128 (every operand below `2^47`, so products below
-/// `2^94`).
-fn column(a: (i64, i64), d: (i64, i64), py: i64) -> i64 {
-    let fast = || {
-        let num = (a.0 - HALF)
-            .checked_mul(d.1)?
-            .checked_add(d.0.checked_mul(py - a.1)?)?;
-        let den = d.1.checked_mul(ONE)?;
-        if den < 0 {
-            ceil_div(num.checked_neg()?, den.checked_neg()?)
-        } else {
-            ceil_div(num, den)
-        }
-    };
-    fast().unwrap_or_else(|| {
-        let w = i128::from;
-        let (mut num, mut den) = (
-            (w(a.0) - w(HALF)) * w(d.1) + w(d.0) * (w(py) - w(a.1)),
-            w(ONE) * w(d.1),
-        );
-        if den < 0 {
-            (num, den) = (-num, -den);
-        }
-        saturate(-((-num).div_euclid(den)))
-    })
 }
 
 /// The columns `lo..hi` of row sample `py` (raw) whose nudged centres lie
@@ -80,7 +48,9 @@ pub(crate) fn interval(piece: &Piece, py: i64) -> Option<(i64, i64)> {
             }
             continue;
         }
-        let c = column(a, d, py);
+        // Centres at 4096 i + 2048: the core's threshold of the line
+        // shifted by half a pixel (every operand below 2^48).
+        let c = threshold_on_row((a.0 - HALF, a.1), d, py)?;
         if o * d.1.signum() > 0 {
             hi = hi.min(c);
         } else {
@@ -259,16 +229,14 @@ mod tests {
             stride: 3,
             rectangle: Rectangle::zero(),
         };
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut random = crate::raster::xorshift(0x9E37_79B9_7F4A_7C15);
         for _ in 0..200 {
             let mut mask = Mask::new();
             mask.clear(&tile);
             let mut written = [[0u8; 90]; 2];
             let mut want = [[false; 90]; 2];
             for _ in 0..12 {
-                x ^= x << 13;
-                x ^= x >> 7;
-                x ^= x << 17;
+                let x = random.next().unwrap_or_default();
                 let row = 7 + (x % 2) as i64;
                 let (a, b) = ((x >> 8) % 91, (x >> 20) % 91);
                 let (a, b) = (a.min(b) as i64 - 40, a.max(b) as i64 - 40);

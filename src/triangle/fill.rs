@@ -445,13 +445,8 @@ mod tests {
     /// top takes the checked frame, not these walks).
     #[test]
     fn tiny_walk_matches_the_two_call_walk() {
-        let mut state = 0x9E37_79B9_7F4A_7C15_u64;
-        let mut next = |n: i32| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state % n as u64) as i32
-        };
+        let mut random = crate::raster::xorshift(0x9E37_79B9_7F4A_7C15);
+        let mut next = |n: i32| (random.next().unwrap_or_default() % n as u64) as i32;
         let mut lit = 0;
         for _ in 0..60_000 {
             let corner = |next: &mut dyn FnMut(i32) -> i32| {
