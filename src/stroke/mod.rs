@@ -327,11 +327,15 @@ impl<'a> Stroke<'a> {
         let mut offsets = Offsets::new();
         let mut mask = Mask::new();
         let mut x0 = columns.start;
+        // A tile from column or row 2^31 on (of a clip that reaches there)
+        // holds no pixel a `Point` can name: the tiles end there.
+        let columns = columns.start..columns.end.min(1 << 31);
+        let rows = rows.start..rows.end.min(1 << 31);
         while x0 < columns.end {
             let x1 = columns.end.min(x0 + MASK_BITS);
             // Words a row of the tile: 1..=MASK_WORDS.
-            let stride = (x1 - x0 + 31) / 32;
-            let tall = i64::try_from(MASK_WORDS).unwrap_or(1) / stride.max(1);
+            let stride = usize::try_from((x1 - x0 + 31) / 32).unwrap_or(MASK_WORDS);
+            let tall = i64::try_from(MASK_WORDS / stride.max(1)).unwrap_or(1);
             let mut y0 = rows.start;
             while y0 < rows.end {
                 let y1 = rows.end.min(y0 + tall);
@@ -345,16 +349,14 @@ impl<'a> Stroke<'a> {
                 };
                 mask.clear(&tile);
                 let window = Window::of(&tile);
+                let origin = tile.rectangle.top_left;
                 let mut result = Ok(());
                 self.for_each_piece(&window, ends, &mut offsets, &mut |piece: &Piece| {
                     if result.is_ok() {
-                        result = piece_spans(piece, &tile, &mut |y, lo, hi| {
-                            // A row past `i32` (of a clip that reaches
-                            // there) has no pixels a span can name.
-                            let Ok(row) = i32::try_from(y) else {
-                                return Ok(());
-                            };
-                            mask.write_unset(&tile, y, lo, hi, |a, b| emit(sink, row, a, b, color))
+                        result = piece_spans(piece, &tile, &mut |row, c, end| {
+                            mask.write_unset(&tile, row, c, end, |s, e| {
+                                emit(sink, origin, row, s, e, color)
+                            })
                         });
                     }
                 });
@@ -529,19 +531,29 @@ impl Offsets {
     }
 }
 
-/// Calls `emit` with the row, start and end of each run of `tile` pixels
-/// `piece` lights: a polygon of 20.12 corners walked by the raster core
+/// Calls `emit` with the row and the columns `c..end` of each run of
+/// `tile` pixels `piece` lights, counted from the tile's top-left pixel:
+/// a polygon of 20.12 corners walked by the raster core
 /// ([`monotone_spans`]: a convex piece is y-monotone), anything else row
 /// by row through [`row::interval`].
 fn piece_spans<E>(
     piece: &Piece,
     tile: &Tile,
-    emit: &mut impl FnMut(i64, i64, i64) -> Result<(), E>,
+    emit: &mut impl FnMut(usize, usize, usize) -> Result<(), E>,
 ) -> Result<(), E> {
+    // Offsets into the tile, in 32 bits: a span of the walk lies inside
+    // the tile's rectangle, at most 8,192 px from its top-left pixel, so
+    // the differences do not overflow and are not negative.
+    let origin = tile.rectangle.top_left;
+    let from = |v: i32, o: i32| (v - o) as u32 as usize;
     if let Some(vertices) = piece.vertices() {
         // Convex: no y-monotone test.
         let walked = monotone_spans(vertices, Shape::Convex, &tile.rectangle, &mut |s: Span| {
-            emit(s.y.into(), s.x_start.into(), s.x_end.into())
+            emit(
+                from(s.y, origin.y),
+                from(s.x_start, origin.x),
+                from(s.x_end, origin.x),
+            )
         });
         if let Some(result) = walked {
             return result;
@@ -551,33 +563,37 @@ fn piece_spans<E>(
     let (lo, hi) = piece.ys;
     let first = (lo.saturating_sub(2048) / 4096 - 1).max(tile.y0);
     let end = (hi.saturating_sub(2048) / 4096 + 2).min(tile.y1);
+    let inside = |v: i64, o: i64| usize::try_from(v - o).unwrap_or(usize::MAX);
     for j in first..end {
         // |j| < 2^32: the sample fits i64.
         if let Some((a, b)) = row::interval(piece, j * 4096 + 2048) {
             let (a, b) = (a.clamp(tile.x0, tile.x1), b.clamp(tile.x0, tile.x1));
             if a < b {
-                emit(j, a, b)?;
+                emit(inside(j, tile.y0), inside(a, tile.x0), inside(b, tile.x0))?;
             }
         }
     }
     Ok(())
 }
 
-/// Writes the pixels `x0..x1` of row `y` (inside the sink's bounds).
+/// Writes the pixels `s..e` of row `row` of the tile whose top-left pixel
+/// is `origin` (inside the sink's bounds).
 fn emit<C: Copy, S: SpanSink<C>>(
     sink: &mut S,
-    y: i32,
-    x0: i64,
-    x1: i64,
+    origin: Point,
+    row: usize,
+    s: usize,
+    e: usize,
     color: C,
 ) -> Result<(), S::Error> {
-    let (Ok(x_start), Ok(len)) = (i32::try_from(x0), u32::try_from(x1 - x0)) else {
-        return Ok(());
-    };
-    match i32::try_from(x1) {
-        Ok(x_end) => sink.fill_span(Span { y, x_start, x_end }, color),
+    // Offsets within a tile, under 2^13 columns and rows (the casts are
+    // exact), whose pixels lie before column and row 2^31: no overflow.
+    let (x_start, y) = (origin.x + s as i32, origin.y + row as i32);
+    let len = e.saturating_sub(s) as u32;
+    match x_start.checked_add_unsigned(len) {
+        Some(x_end) => sink.fill_span(Span { y, x_start, x_end }, color),
         // A span ending past i32::MAX, which a `Span` cannot hold.
-        Err(_) => sink.fill_rect(
+        None => sink.fill_rect(
             &Rectangle::new(Point::new(x_start, y), Size::new(len, 1)),
             color,
         ),

@@ -104,15 +104,16 @@ pub(crate) const MASK_BITS: i64 = 32 * MASK_WORDS as i64;
 
 /// A rectangle of pixels `x0..x1` by `y0..y1` whose mask rows are
 /// `stride` words apart (`stride (y1 - y0) <= MASK_WORDS`, `x1 - x0 <=
-/// 32 stride`).
+/// 32 stride`), its top-left pixel a `Point` (`x0` and `y0` fit `i32`).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Tile {
     pub x0: i64,
     pub x1: i64,
     pub y0: i64,
     pub y1: i64,
-    pub stride: i64,
-    /// The same pixels, for the walk's clip.
+    pub stride: usize,
+    /// The same pixels, for the walk's clip: its top-left corner is
+    /// `(x0, y0)`, from which the mask's rows and columns count.
     pub rectangle: Rectangle,
 }
 
@@ -131,38 +132,36 @@ impl Mask {
 
     /// Marks every pixel of `tile` unwritten.
     pub fn clear(&mut self, tile: &Tile) {
-        let used = usize::try_from(tile.stride * (tile.y1 - tile.y0)).unwrap_or(MASK_WORDS);
+        let rows = usize::try_from(tile.y1 - tile.y0).unwrap_or(MASK_WORDS);
+        let used = tile.stride.saturating_mul(rows);
         if let Some(words) = self.words.get_mut(..used) {
             words.fill(0);
         }
     }
 
-    /// Calls `write` with each run of pixels of `x0..x1` in row `y` of
-    /// `tile` (all inside it) not written yet, left to right, and marks
-    /// them written.
+    /// Calls `write` with each run of columns of `c..end` in row `row` of
+    /// `tile` (counted from its top-left pixel, all inside it) not written
+    /// yet, left to right, and marks them written.
+    ///
+    /// The tile's own columns and rows, in `usize`: on a 32-bit core this
+    /// is the stroke's inner loop, and the absolute coordinates were
+    /// 64-bit arithmetic there.
     pub fn write_unset<E>(
         &mut self,
         tile: &Tile,
-        y: i64,
-        x0: i64,
-        x1: i64,
-        mut write: impl FnMut(i64, i64) -> Result<(), E>,
+        row: usize,
+        mut c: usize,
+        end: usize,
+        mut write: impl FnMut(usize, usize) -> Result<(), E>,
     ) -> Result<(), E> {
-        // Columns within the tile, `0..=32 stride`, and the row's words:
-        // in `usize` from here on.
-        let index = |v: i64| usize::try_from(v).ok();
-        let (Some(start), Some(stride), Some(mut c), Some(end)) = (
-            index((y - tile.y0) * tile.stride),
-            index(tile.stride),
-            index(x0 - tile.x0),
-            index(x1 - tile.x0),
-        ) else {
-            return Ok(());
-        };
+        let stride = tile.stride;
+        // Inside the tile: its rows times their words, and its columns,
+        // are at most `MASK_WORDS` and `32 MASK_WORDS`.
+        debug_assert!(row * stride < MASK_WORDS && end <= 32 * stride);
+        let start = row * stride;
         let Some(row) = self.words.get_mut(start..start + stride) else {
             return Ok(());
         };
-        let at = |c: usize| tile.x0 + i64::try_from(c).unwrap_or_default();
         // Word by word: mark the span's bits, and carry the unwritten run
         // that reaches the word's end into the next word.
         let mut open: Option<usize> = None;
@@ -188,7 +187,7 @@ impl Mask {
                             break;
                         }
                         let e = ahead.trailing_zeros() as usize;
-                        write(at(s), at(32 * k + e))?;
+                        write(s, 32 * k + e)?;
                         open = None;
                         pos = e;
                     }
@@ -206,7 +205,7 @@ impl Mask {
             c = 32 * k + hi;
         }
         if let Some(s) = open {
-            write(at(s), at(end))?;
+            write(s, end)?;
         }
         Ok(())
     }
@@ -217,8 +216,8 @@ mod tests {
     use super::*;
 
     /// `write_unset` against a plain array of flags: random runs in a
-    /// tile 3 words wide and 2 rows tall, across word boundaries, each
-    /// pixel written once and exactly the runs' union written.
+    /// tile 3 words (90 px) wide and 2 rows tall, across word boundaries,
+    /// each pixel written once and exactly the runs' union written.
     #[test]
     fn masked_runs_write_each_pixel_once() {
         let tile = Tile {
@@ -237,21 +236,21 @@ mod tests {
             let mut want = [[false; 90]; 2];
             for _ in 0..12 {
                 let x = random.next().unwrap_or_default();
-                let row = 7 + (x % 2) as i64;
-                let (a, b) = ((x >> 8) % 91, (x >> 20) % 91);
-                let (a, b) = (a.min(b) as i64 - 40, a.max(b) as i64 - 40);
+                let row = (x % 2) as usize;
+                let (a, b) = (((x >> 8) % 91) as usize, ((x >> 20) % 91) as usize);
+                let (a, b) = (a.min(b), a.max(b));
                 for c in a..b {
-                    want[(row - 7) as usize][(c + 40) as usize] = true;
+                    want[row][c] = true;
                 }
-                let mut last = i64::MIN;
+                let mut last = None;
                 mask.write_unset(&tile, row, a, b, |s, e| {
                     assert!(
-                        a <= s && s < e && e <= b && s > last,
+                        a <= s && s < e && e <= b && last.is_none_or(|l| s > l),
                         "{s}..{e} in {a}..{b}"
                     );
-                    last = e;
+                    last = Some(e);
                     for c in s..e {
-                        written[(row - 7) as usize][(c + 40) as usize] += 1;
+                        written[row][c] += 1;
                     }
                     Ok::<(), ()>(())
                 })
