@@ -239,9 +239,7 @@ mod tests {
                 let row = (x % 2) as usize;
                 let (a, b) = (((x >> 8) % 91) as usize, ((x >> 20) % 91) as usize);
                 let (a, b) = (a.min(b), a.max(b));
-                for c in a..b {
-                    want[row][c] = true;
-                }
+                want[row][a..b].fill(true);
                 let mut last = None;
                 mask.write_unset(&tile, row, a, b, |s, e| {
                     assert!(
@@ -249,8 +247,8 @@ mod tests {
                         "{s}..{e} in {a}..{b}"
                     );
                     last = Some(e);
-                    for c in s..e {
-                        written[row][c] += 1;
+                    for n in &mut written[row][s..e] {
+                        *n += 1;
                     }
                     Ok::<(), ()>(())
                 })
