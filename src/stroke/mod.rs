@@ -326,11 +326,12 @@ impl<'a> Stroke<'a> {
         let ends = self.ends();
         let mut offsets = Offsets::new();
         let mut mask = Mask::new();
-        let mut x0 = columns.start;
         // A tile from column or row 2^31 on (of a clip that reaches there)
-        // holds no pixel a `Point` can name: the tiles end there.
+        // holds no pixel a `Point` can name: the tiles end there, and each
+        // tile's top-left pixel is a `Point`.
         let columns = columns.start..columns.end.min(1 << 31);
         let rows = rows.start..rows.end.min(1 << 31);
+        let mut x0 = columns.start;
         while x0 < columns.end {
             let x1 = columns.end.min(x0 + MASK_BITS);
             // Words a row of the tile: 1..=MASK_WORDS.
