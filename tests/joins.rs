@@ -612,3 +612,101 @@ fn reversal_round_cap() {
     assert!(lit(&r, 44, 30) && !lit(&r, 46, 30) && !lit(&r, 44, 25));
     assert!(lit(&b, 39, 30) && !lit(&b, 40, 30));
 }
+
+/// A target whose box reaches past column `i32::MAX`, recording every
+/// pixel written (as `i64` columns) and how often.
+struct FarTarget {
+    bounds: embedded_graphics_core::primitives::Rectangle,
+    writes: std::collections::HashMap<(i64, i64), u32>,
+}
+
+impl Dimensions for FarTarget {
+    fn bounding_box(&self) -> embedded_graphics_core::primitives::Rectangle {
+        self.bounds
+    }
+}
+
+impl DrawTarget for FarTarget {
+    type Color = Gray8;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Gray8>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Self::Error> {
+        for Pixel(p, _) in pixels {
+            *self.writes.entry((p.x.into(), p.y.into())).or_default() += 1;
+        }
+        Ok(())
+    }
+
+    fn fill_solid(
+        &mut self,
+        area: &embedded_graphics_core::primitives::Rectangle,
+        _: Gray8,
+    ) -> Result<(), Self::Error> {
+        let (x, y) = (i64::from(area.top_left.x), i64::from(area.top_left.y));
+        for row in y..y + i64::from(area.size.height) {
+            for column in x..x + i64::from(area.size.width) {
+                *self.writes.entry((column, row)).or_default() += 1;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// At the right end of the coordinate space, on a target whose box
+/// reaches past it: every pixel a `Point` can name is lit as the
+/// reference says and written once; none past column `i32::MAX` (no
+/// `Point` names one) is written.
+#[test]
+fn strokes_at_the_last_column() {
+    let m = i32::MAX;
+    let points = [
+        Point::new(m - 40, 1010),
+        Point::new(m - 10, 1040),
+        Point::new(m, 1005),
+        Point::new(m - 25, 1020),
+    ];
+    let left = i64::from(m) - 47;
+    for join in [Join::Miter, Join::Bevel, Join::Round] {
+        let mut target = FarTarget {
+            bounds: embedded_graphics_core::primitives::Rectangle::new(
+                Point::new(m - 47, 1000),
+                Size::new(200, 48),
+            ),
+            writes: Default::default(),
+        };
+        Polyline::new(&points)
+            .stroke(Gray8::WHITE)
+            .stroke_width(7)
+            .join(join)
+            .draw(&mut target)
+            .unwrap();
+        assert!(
+            target.writes.keys().all(|&(x, _)| x <= i64::from(m)),
+            "{join:?}"
+        );
+        let reference = Reference::polyline(&points, 7, join);
+        let mut decided = 0;
+        for y in 1000..1048i64 {
+            for x in left..=i64::from(m) {
+                let c = target.writes.get(&(x, y)).copied().unwrap_or(0);
+                assert!(c <= 1, "{join:?}: ({x}, {y}) written {c} times");
+                let (lo, hi) = reference.margin((x as f64 + 0.5, y as f64 + 0.5));
+                if lo > EPS {
+                    assert_eq!(c, 1, "{join:?}: ({x}, {y}) inside by {lo} but unlit");
+                    decided += 1;
+                } else if hi < -EPS {
+                    assert_eq!(c, 0, "{join:?}: ({x}, {y}) outside by {hi} but lit");
+                    decided += 1;
+                }
+            }
+        }
+        assert!(decided > 2000, "{join:?}: {decided} decided");
+        assert!(
+            target.writes.contains_key(&(i64::from(m), 1005)),
+            "{join:?}"
+        );
+    }
+}
