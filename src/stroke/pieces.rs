@@ -36,7 +36,7 @@
 
 use super::{Join, MITER_LIMIT};
 use crate::{
-    raster::wide::{div_sqrt, round_div},
+    raster::wide::{div_sqrt, round_div, Wide},
     vertex::Vertex,
 };
 
@@ -111,30 +111,59 @@ impl Piece {
 
     /// Makes this empty piece the polygon through `v`; `None` if it has
     /// no area.
+    ///
+    /// In `i64` when every coordinate lies below `2^29` in magnitude (any
+    /// stroke on a screen: differences below `2^30`, twice the area below
+    /// `2^62`), else in `i128`. On a 32-bit core the `i128` products took
+    /// most of a piece's set-up.
     #[inline(always)]
     fn set_polygon(&mut self, v: &[Pt]) -> Option<()> {
-        let first = *v.first()?;
-        // Twice the area, from the first vertex.
-        let area: i128 = v
-            .windows(2)
-            .skip(1)
-            .map(|w| cross(sub(w[0], first), sub(w[1], first)))
-            .sum();
-        let o = area.signum() as i8;
-        if o == 0 {
-            return None;
+        const NEAR: i128 = 1 << 29;
+        let mut near = [(0i64, 0i64); 4];
+        let all_near = v.len() <= near.len()
+            && v.iter().zip(&mut near).all(|(p, slot)| {
+                // Tested in i128 first: the conversion is then exact.
+                let inside = |c: i128| match -NEAR < c && c < NEAR {
+                    true => i64::try_from(c).ok(),
+                    false => None,
+                };
+                match (inside(p.0), inside(p.1)) {
+                    (Some(x), Some(y)) => {
+                        *slot = (x, y);
+                        true
+                    }
+                    _ => false,
+                }
+            });
+        match all_near {
+            true => self.set_outline(near.get(..v.len())?),
+            false => self.set_outline(v),
         }
-        let (lo, hi) = v.iter().fold((i128::MAX, i128::MIN), |(lo, hi), p| {
-            (lo.min(p.1), hi.max(p.1))
+    }
+
+    /// [`set_polygon`](Self::set_polygon) in `T`, which holds `v` and
+    /// twice its area.
+    #[inline(always)]
+    fn set_outline<T: Wide>(&mut self, v: &[(T, T)]) -> Option<()> {
+        let first = *v.first()?;
+        let sub = |u: (T, T), w: (T, T)| (u.0 - w.0, u.1 - w.1);
+        // Twice the area, from the first vertex.
+        let area = v.windows(2).skip(1).fold(T::ZERO, |sum, w| {
+            let (u, w) = (sub(w[0], first), sub(w[1], first));
+            sum + (u.0 * w.1 - u.1 * w.0)
         });
-        self.ys = narrow((lo, hi))?;
-        // The corners as vertices, if each fits the 20.12 range.
-        let vertex = |p: &Pt| {
-            Some(Vertex::from_raw(
-                i32::try_from(p.0).ok()?,
-                i32::try_from(p.1).ok()?,
-            ))
+        let o: i8 = match area.cmp(&T::ZERO) {
+            core::cmp::Ordering::Less => -1,
+            core::cmp::Ordering::Equal => return None,
+            core::cmp::Ordering::Greater => 1,
         };
+        let (lo, hi) = v
+            .iter()
+            .skip(1)
+            .fold((first.1, first.1), |(lo, hi), p| (lo.min(p.1), hi.max(p.1)));
+        self.ys = (lo.to_i64()?, hi.to_i64()?);
+        // The corners as vertices, if each fits the 20.12 range.
+        let vertex = |p: &(T, T)| Some(Vertex::from_raw(p.0.to_i32()?, p.1.to_i32()?));
         let mut corners = Some([Vertex::default(); 4]);
         for (k, p) in v.iter().enumerate() {
             match (corners.as_mut().and_then(|c| c.get_mut(k)), vertex(p)) {
@@ -147,10 +176,10 @@ impl Piece {
         let next = v.iter().skip(1).chain(Some(&first));
         for (&from, &to) in v.iter().zip(next) {
             let d = sub(to, from);
-            if d != (0, 0) {
+            if d != (T::ZERO, T::ZERO) {
                 self.push(Plane {
-                    a: narrow(from)?,
-                    d: narrow(d)?,
+                    a: (from.0.to_i64()?, from.1.to_i64()?),
+                    d: (d.0.to_i64()?, d.1.to_i64()?),
                     o,
                 });
             }
