@@ -137,8 +137,16 @@ impl Piece {
             });
         match all_near {
             true => self.set_outline(near.get(..v.len())?),
-            false => self.set_outline(v),
+            false => self.set_outline_wide(v),
         }
+    }
+
+    /// [`set_outline`](Self::set_outline) in `i128`, out of line: one
+    /// copy for the pieces far off any screen, not one in every kind of
+    /// piece (flash).
+    #[inline(never)]
+    fn set_outline_wide(&mut self, v: &[Pt]) -> Option<()> {
+        self.set_outline(v)
     }
 
     /// [`set_polygon`](Self::set_polygon) in `T`, which holds `v` and
