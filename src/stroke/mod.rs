@@ -579,6 +579,7 @@ fn piece_spans<E>(
 
 /// Writes the pixels `s..e` of row `row` of the tile whose top-left pixel
 /// is `origin` (inside the sink's bounds).
+#[inline(always)]
 fn emit<C: Copy, S: SpanSink<C>>(
     sink: &mut S,
     origin: Point,
