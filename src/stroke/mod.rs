@@ -124,15 +124,15 @@ use row::{Mask, Tile, MASK_BITS, MASK_WORDS};
 /// reach of a point are visited.
 ///
 /// Measured on the host, 8 px wide on a 320 x 240 framebuffer (`cargo
-/// bench --bench lines -- "thick polyline"`, two runs on the build
-/// machine of 2026-12-05): a 21-point zigzag takes 54 to 55 µs and a
-/// noisy 320-point trace (each row crossed by about a hundred segments)
-/// 0.50 ms. That is 3.5 and 4.1 times as long as the same segments drawn
-/// as separate thick lines, which overlap and leave notches, and 20 and
-/// 25 times faster than embedded-graphics 0.8's `Polyline` with the same
-/// stroke (1.1 ms and 12.5 ms), in the same runs. On a Cortex-M4
-/// (`.ci/itrace`) the zigzag takes 1.22 million instructions, its
-/// separate thick lines 0.30 million.
+/// bench --bench lines -- "thick polyline"`, one run on the build machine
+/// of 2026-12-05): a 21-point zigzag takes 46 µs and a noisy 320-point
+/// trace (each row crossed by about a hundred segments) 0.45 ms. That is
+/// 3.4 and 4.2 times as long as the same segments drawn as separate thick
+/// lines, which overlap and leave notches, and 24 and 28 times faster
+/// than embedded-graphics 0.8's `Polyline` with the same stroke (1.1 ms
+/// and 12.5 ms), in the same run. On a Cortex-M4 (`.ci/itrace`) the
+/// zigzag takes 1.09 million instructions, its separate thick lines 0.30
+/// million.
 ///
 /// # Ranges
 ///
