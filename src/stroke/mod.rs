@@ -37,8 +37,9 @@
 //! chains of edges from its top corner to its bottom one, stepped a row
 //! at a time with no division. A round join's disk sector, and a piece
 //! reaching past the 20.12 range, has its columns found row by row
-//! instead (a division per side, in 64 bits when the products fit and in
-//! 128 otherwise, an integer square root for the disk). Both light
+//! instead (a division per side by the raster core's one-row threshold,
+//! in 64 bits for any stroke on a screen and in 128 beyond, and an
+//! integer square root for the disk). Both light
 //! exactly the pixels whose nudged centres the piece holds; the pieces
 //! share their corner points exactly, and two pieces meeting along a
 //! line light each pixel on it once, through the nudge.

@@ -114,8 +114,9 @@ impl Piece {
     ///
     /// In `i64` when every coordinate lies below `2^29` in magnitude (any
     /// stroke on a screen: differences below `2^30`, twice the area below
-    /// `2^62`), else in `i128`. On a 32-bit core the `i128` products took
-    /// most of a piece's set-up.
+    /// `2^62`), else in `i128`. On a Cortex-M4 the `i128` set-up was
+    /// about 30 % of the tiles' piece building (`.ci/itrace`'s zigzag:
+    /// `for_each_piece` 236,474 instructions all in `i128`, 165,772 now).
     #[inline(always)]
     fn set_polygon(&mut self, v: &[Pt]) -> Option<()> {
         const NEAR: i128 = 1 << 29;

@@ -155,9 +155,9 @@ impl Mask {
         mut write: impl FnMut(usize, usize) -> Result<(), E>,
     ) -> Result<(), E> {
         let stride = tile.stride;
-        // Inside the tile: its rows times their words, and its columns,
-        // are at most `MASK_WORDS` and `32 MASK_WORDS`.
-        debug_assert!(row * stride < MASK_WORDS && end <= 32 * stride);
+        // Inside the tile: its rows' words lie within the mask, and its
+        // columns within a row's words.
+        debug_assert!((row + 1) * stride <= MASK_WORDS && end <= 32 * stride);
         let start = row * stride;
         let Some(row) = self.words.get_mut(start..start + stride) else {
             return Ok(());
