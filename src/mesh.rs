@@ -79,6 +79,17 @@ pub fn sin_cos(angle: u16) -> (i32, i32) {
 }
 
 /// A point or direction in Q15 fixed point.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::mesh::{Vec3, ONE};
+///
+/// // One unit up, two away from the viewer.
+/// let v = Vec3 { x: 0, y: ONE, z: 2 * ONE };
+/// assert_eq!(v, Vec3::new(0, ONE, 2 * ONE));
+/// assert_eq!(v.dot(v), 5 * ONE);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Vec3 {
@@ -92,6 +103,15 @@ pub struct Vec3 {
 
 impl Vec3 {
     /// A vector from its components.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_raster::mesh::Vec3;
+    ///
+    /// let v = Vec3::new(1, -2, 3);
+    /// assert_eq!((v.x, v.y, v.z), (1, -2, 3));
+    /// ```
     pub const fn new(x: i32, y: i32, z: i32) -> Self {
         Self { x, y, z }
     }
@@ -241,6 +261,21 @@ impl Rotation {
 }
 
 /// A pinhole camera at the origin looking along `+z`.
+///
+/// # Examples
+///
+/// A point on the optical axis lands on the centre; one twice as far
+/// off the axis, at the same depth, lands twice as far from it.
+///
+/// ```
+/// use embedded_raster::mesh::{Camera, Vec3, ONE};
+///
+/// let cam = Camera { focal: 64, centre: (80, 60), near: ONE / 4, far: 8 * ONE };
+/// let at = |x: i32| cam.project(Vec3::new(x, 0, 4 * ONE)).unwrap().0.raw();
+/// assert_eq!(at(0), (80 << 12, 60 << 12));
+/// assert_eq!(at(ONE).0 - at(0).0, 16 << 12); // 64 px * 1 / 4
+/// assert_eq!(at(2 * ONE).0 - at(0).0, 32 << 12);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Camera {
@@ -308,6 +343,19 @@ impl Camera {
 }
 
 /// Why [`sphere`] could not build a mesh.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_raster::mesh::{sphere, MeshError, Vec3};
+///
+/// let (mut vertices, mut triangles) = ([Vec3::default(); 16], [[0u16; 3]; 16]);
+/// assert_eq!(
+///     sphere(4, 6, &mut vertices, &mut triangles),
+///     Err(MeshError::StorageTooSmall { vertices: 20, triangles: 36 })
+/// );
+/// assert_eq!(sphere(1, 6, &mut vertices, &mut triangles), Err(MeshError::BadDivisions));
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum MeshError {

@@ -322,11 +322,70 @@ pub trait BandOutput<T> {
     /// the screen's `area`. It may start a transfer from `band` and return
     /// before it ends: the renderer draws into that buffer again only
     /// after [`wait`](Self::wait) for it.
+    ///
+    /// # Examples
+    ///
+    /// A closure is an output: here it records the screen rows of each
+    /// band of a 10-row screen drawn in bands of 4 rows.
+    ///
+    /// ```
+    /// use core::convert::Infallible;
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+    /// use embedded_raster::{band::{render_in_bands, BandOutput}, framebuffer::{buffer_size, BinaryMsb}, Framebuffer};
+    ///
+    /// type Rows = Framebuffer<BinaryMsb, 8, 4, { buffer_size::<BinaryMsb>(8, 4) }>;
+    /// let (mut sent, mut count) = ([(0, 0); 4], 0);
+    /// let mut output = |_: &Rows, area: Rectangle| {
+    ///     sent[count] = (area.top_left.y, area.size.height);
+    ///     count += 1;
+    ///     Ok::<(), Infallible>(())
+    /// };
+    /// output.send(&Rows::new(), Rectangle::new(Point::zero(), Size::new(8, 1)))?;
+    /// render_in_bands(10, &mut [Rows::new()], None, |band, _| band.clear(BinaryColor::On), &mut output)?;
+    /// assert_eq!(sent, [(0, 1), (0, 4), (4, 4), (8, 2)]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     fn send(&mut self, band: &T, area: Rectangle) -> Result<(), Self::Error>;
 
     /// Returns once nothing is being read from `band` any more. The
     /// provided implementation returns at once (for a `send` that is done
     /// when it returns).
+    ///
+    /// # Examples
+    ///
+    /// An output that counts the transfers still running: `send` starts
+    /// one, `wait` ends it. With two buffers, the renderer waits for each
+    /// before drawing into it again, and for both at the end.
+    ///
+    /// ```
+    /// use core::convert::Infallible;
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+    /// use embedded_raster::{band::{render_in_bands, BandOutput}, framebuffer::{buffer_size, BinaryMsb}, Framebuffer};
+    ///
+    /// type Rows = Framebuffer<BinaryMsb, 8, 2, { buffer_size::<BinaryMsb>(8, 2) }>;
+    /// #[derive(Default)]
+    /// struct Transfers { running: u32, most: u32, waits: u32 }
+    /// impl BandOutput<Rows> for Transfers {
+    ///     type Error = Infallible;
+    ///     fn send(&mut self, _: &Rows, _: Rectangle) -> Result<(), Infallible> {
+    ///         self.running += 1;
+    ///         self.most = self.most.max(self.running);
+    ///         Ok(())
+    ///     }
+    ///     fn wait(&mut self, _: &Rows) -> Result<(), Infallible> {
+    ///         self.running = self.running.saturating_sub(1);
+    ///         self.waits += 1;
+    ///         Ok(())
+    ///     }
+    /// }
+    ///
+    /// let mut output = Transfers::default();
+    /// let mut buffers = [Rows::new(), Rows::new()];
+    /// render_in_bands(8, &mut buffers, None, |band, _| band.clear(BinaryColor::On), &mut output)?;
+    /// // Four bands: two waits before buffers are reused, two at the end.
+    /// assert_eq!((output.running, output.most, output.waits), (0, 2, 4));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     fn wait(&mut self, band: &T) -> Result<(), Self::Error> {
         let _ = band;
         Ok(())
