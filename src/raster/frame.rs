@@ -26,17 +26,48 @@ pub(crate) struct Frame {
 }
 
 /// The first pixel whose centre `4096 i + 2048` is at or right of `raw`:
-/// `ceil((raw - 2048) / 4096)`, without overflow for any `i32`.
+/// `ceil((raw - 2048) / 4096) = floor((raw + 2047) / 4096)`, without
+/// overflow for any `i32` (the result lies within `-2^19..=2^19`).
+///
+/// On 64-bit targets the sum is taken in `i64`, an add and a shift; on
+/// narrower ones the whole units and the remainder apart, all in `i32`,
+/// since an `i64` sum takes a register pair there. Measured: random tiny
+/// triangles on x86-64 took 505 instructions a triangle with the split
+/// form, 495 with `i64` (callgrind, `benches/pools_callgrind.py`); on a
+/// Cortex-M4 (`.ci/icount`) the `i64` form put 13 instructions on a
+/// triangle's setup (272 → 285).
 #[inline(always)]
 const fn first_centre_at_or_after(raw: i32) -> i32 {
-    (raw >> 12) + (((raw & 4095) + 2047) >> 12)
+    match cfg!(target_pointer_width = "64") {
+        true => centre_index_wide(raw, 2047),
+        false => centre_index_split(raw, 2047),
+    }
 }
 
 /// The last pixel whose centre is at or left of `raw`: `floor((raw -
-/// 2048) / 4096)`, without overflow for any `i32`.
+/// 2048) / 4096)`, without overflow for any `i32`; in `i64` on 64-bit
+/// targets, as [`first_centre_at_or_after`].
 #[inline(always)]
 const fn last_centre_at_or_before(raw: i32) -> i32 {
-    (raw >> 12) + (((raw & 4095) - 2048) >> 12)
+    match cfg!(target_pointer_width = "64") {
+        true => centre_index_wide(raw, -2048),
+        false => centre_index_split(raw, -2048),
+    }
+}
+
+/// `floor((raw + offset) / 4096)` for `offset` within `-2048..=2047`,
+/// in `i64`. The cast back is exact: the quotient lies within
+/// `-2^19..=2^19`.
+#[inline(always)]
+const fn centre_index_wide(raw: i32, offset: i32) -> i32 {
+    ((raw as i64 + offset as i64) >> 12) as i32
+}
+
+/// [`centre_index_wide`] in `i32`: whole units and remainder apart, so
+/// that nothing overflows.
+#[inline(always)]
+const fn centre_index_split(raw: i32, offset: i32) -> i32 {
+    (raw >> 12) + (((raw & 4095) + offset) >> 12)
 }
 
 impl Frame {
@@ -162,5 +193,47 @@ impl Frame {
             T::difference(x, self.centre.0, self.near)?,
             T::difference(y, self.centre.1, self.near)?,
         ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Both forms of the centre indices, whichever the target uses,
+    /// against `div_euclid` in `i64`: every raw value near the ends of
+    /// `i32` and near 0, and random ones.
+    #[test]
+    fn centre_indices_are_exact_for_every_i32() {
+        let near = |c: i64| (c - 9000..=c + 9000).filter_map(|v| i32::try_from(v).ok());
+        let mut random = crate::raster::xorshift(0x2545_F491_4F6C_DD1D);
+        let values = near(i64::from(i32::MIN))
+            .chain(near(0))
+            .chain(near(i64::from(i32::MAX)))
+            .chain((0..100_000).map(|_| random.next().unwrap_or_default() as i32));
+        for raw in values {
+            for offset in [2047, -2048] {
+                let want = (i64::from(raw) + i64::from(offset)).div_euclid(4096);
+                assert_eq!(
+                    i64::from(centre_index_wide(raw, offset)),
+                    want,
+                    "{raw} {offset}"
+                );
+                assert_eq!(
+                    i64::from(centre_index_split(raw, offset)),
+                    want,
+                    "{raw} {offset}"
+                );
+            }
+            // The first centre at or after `raw` is; the one before it is not.
+            let first = i64::from(first_centre_at_or_after(raw));
+            assert!(
+                first * 4096 + 2048 >= i64::from(raw) && (first - 1) * 4096 + 2048 < i64::from(raw)
+            );
+            let last = i64::from(last_centre_at_or_before(raw));
+            assert!(
+                last * 4096 + 2048 <= i64::from(raw) && (last + 1) * 4096 + 2048 > i64::from(raw)
+            );
+        }
     }
 }

@@ -280,13 +280,11 @@ fn walk_tiny<E>(
     let mut row = 0;
     loop {
         let (ts, tl) = (short.threshold(), long.threshold());
-        emit_columns(
-            frame,
-            row,
-            ts.min(tl).max(0),
-            ts.max(tl).min(frame.width),
-            emit,
-        )?;
+        // No threshold lies left of the small frame (see `rows` without
+        // its left clamp).
+        let x0 = ts.min(tl);
+        debug_assert!(x0 >= 0);
+        emit_columns(frame, row, x0, ts.max(tl).min(frame.width), emit)?;
         if row == end {
             return Ok(());
         }
