@@ -194,7 +194,8 @@ fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Option<&mut [u
 
 /// Whether spans of `pixel` go as one `memset`: if all its bytes are equal
 /// (black, white, any grey), and on 32-bit ARM not for pixels of 2 or 4
-/// bytes. The `memset` there stores a word a loop step, where the word
+/// bytes (hosts do not ask for pixels of 2, 4 or 8 bytes: see
+/// [`fill_bytes`]). The `memset` there stores a word a loop step, where the word
 /// paths store eight (`strd`) or a few overlapping ones: spans and
 /// rectangles of black took up to 2.8x the instructions of a colour's
 /// (Cortex-M4, `.ci/icount` with black: the 240 px triangle 52,683
@@ -213,7 +214,10 @@ fn by_memset<const B: usize>(pixel: [u8; B]) -> bool {
 
 /// Fills `bytes`, whole pixels, with copies of `pixel`.
 ///
-/// One `memset` if [`by_memset`]. Otherwise:
+/// On hosts, pixels of 2, 4 or 8 bytes as overlapping 16-byte blocks
+/// ([`fill_overlapping`]: no pixel-by-pixel tail, measured faster on
+/// x86-64 on spans of a few pixels to a few dozen), whatever the colour.
+/// Otherwise, one `memset` if [`by_memset`], else:
 ///
 /// - on a core that stores unaligned words (`unaligned_words`), for
 ///   pixels whose size divides 4, a few overlapping words, around aligned
@@ -223,17 +227,21 @@ fn by_memset<const B: usize>(pixel: [u8; B]) -> bool {
 ///   compiler turns into runs of `strd` on a Cortex-M4; shorter spans
 ///   there are a plain pixel loop (the aligned word setup costs more than
 ///   it saves);
-/// - on other architectures, pixels of 2, 4 or 8 bytes as overlapping
-///   16-byte blocks ([`fill_overlapping`]: no pixel-by-pixel tail,
-///   measured faster on x86-64 on spans of a few pixels to a few dozen),
-///   other sizes as the pixel loop, which the compiler vectorizes.
+/// - on other architectures, the pixel loop, which the compiler
+///   vectorizes.
+///
+/// Hosts once sent a colour of equal bytes to `memset` before the blocks:
+/// that test, made for every span, took 3 instructions a row on x86-64,
+/// and the blocks store as fast (a 320 x 240 `Rgb565Le` clear, one span
+/// of 153,600 bytes, took 2.32 us in black through `memset` and in red
+/// through the blocks, and takes 2.32 us in black through the blocks).
 #[inline(always)]
 fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     let Some(&first) = pixel.first() else { return };
-    if by_memset(pixel) {
-        bytes.fill(first);
-    } else if !cfg!(target_arch = "arm") && 8 % B == 0 {
+    if !cfg!(target_arch = "arm") && 8 % B == 0 && B > 1 {
         fill_overlapping(bytes, pixel);
+    } else if by_memset(pixel) {
+        bytes.fill(first);
     } else if cfg!(unaligned_words) && 4 % B == 0 {
         fill_unaligned_words(bytes, pixel);
     } else if bytes.len() < 16 * B || !cfg!(target_arch = "arm") {
@@ -261,15 +269,36 @@ fn fill_overlapping<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     // arrays, one 16-byte store each on x86-64 (a block copied from a
     // slice went as two 8-byte stores, and the last one as an 8-byte
     // store and four 2-byte ones).
-    if n > 64 {
-        let (blocks, rest) = bytes.as_chunks_mut::<16>();
-        blocks.fill(pattern);
-        if !rest.is_empty() {
-            if let Some(last) = bytes.last_chunk_mut::<16>() {
-                *last = pattern;
-            }
+    if n < 16 {
+        // Short spans first: most rows of small triangles are, and each
+        // test on the way to them costs every such row two instructions
+        // (random triangles drawn by `draw_spans`, instructions counted by
+        // callgrind, with the `memset` test above gone too: tiny 485 a
+        // triangle → 460, small 1,117 → 1,074, medium 3,709 → 3,606, the
+        // mesh 999 → 961; large 13,456 → 13,407, its long spans now past
+        // two tests instead of one).
+        if n >= 8 {
+            overlapping_pair(bytes, &pattern[..8]);
+        } else if n >= 4 && 4 % B == 0 {
+            overlapping_pair(bytes, &pattern[..4]);
+        } else if B == 1 {
+            // Two or three 1-byte pixels (the framebuffer sends those to
+            // `memset`; this keeps the function whole for any `B`).
+            bytes.fill(pixel[0]);
+        } else if let Some(only) = bytes.first_chunk_mut::<B>() {
+            // One pixel: what is left of whole pixels of 2, 4 or 8 bytes
+            // under 8 bytes, or under 4 when `B` divides 4 (`n` is 0 or
+            // `B`). One store, not the loop's set-up for it (x86-64,
+            // random triangles drawn by `draw_spans`, instructions counted
+            // by callgrind: tiny 533 a triangle → 526, small 1,229 →
+            // 1,220, the mesh 1,101 → 1,090). And no pixel loop at all
+            // after it: the row loop that inlines this then stopped
+            // stepping that loop's row address, 2 instructions a row (tiny
+            // 530 → 515, small 1,180 → 1,127, medium 3,857 → 3,719, large
+            // 13,789 → 13,466, the mesh 1,056 → 1,009).
+            *only = pixel;
         }
-    } else if n >= 16 {
+    } else if n <= 64 {
         // Up to 64 bytes: the first and the last block, and if needed the
         // second and the one before the last, overlapping. No loop: the
         // loop's set-up and its remainder took about 20 instructions a row
@@ -290,25 +319,14 @@ fn fill_overlapping<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
                 *b = pattern;
             }
         }
-    } else if n >= 8 {
-        overlapping_pair(bytes, &pattern[..8]);
-    } else if n >= 4 && 4 % B == 0 {
-        overlapping_pair(bytes, &pattern[..4]);
-    } else if B == 1 {
-        // Two or three 1-byte pixels (the framebuffer sends those to
-        // `memset`; this keeps the function whole for any `B`).
-        bytes.fill(pixel[0]);
-    } else if let Some(only) = bytes.first_chunk_mut::<B>() {
-        // One pixel: what is left of whole pixels of 2, 4 or 8 bytes under
-        // 8 bytes, or under 4 when `B` divides 4 (`n` is 0 or `B`). One
-        // store, not the loop's set-up for it (x86-64, random triangles
-        // drawn by `draw_spans`, instructions counted by callgrind: tiny
-        // 533 a triangle → 526, small 1,229 → 1,220, the mesh 1,101 →
-        // 1,090). And no pixel loop at all after it: the row loop that
-        // inlines this then stopped stepping that loop's row address, 2
-        // instructions a row (tiny 530 → 515, small 1,180 → 1,127, medium
-        // 3,857 → 3,719, large 13,789 → 13,466, the mesh 1,056 → 1,009).
-        *only = pixel;
+    } else {
+        let (blocks, rest) = bytes.as_chunks_mut::<16>();
+        blocks.fill(pattern);
+        if !rest.is_empty() {
+            if let Some(last) = bytes.last_chunk_mut::<16>() {
+                *last = pattern;
+            }
+        }
     }
 }
 
