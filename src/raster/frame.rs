@@ -125,8 +125,11 @@ impl Frame {
         // origin's distance past its near edge (exact in u32, the origin
         // being at or past it), held in i32.
         let rest = |at: i32, start: i32, len: u32| {
-            let rest = len.checked_sub(at.abs_diff(start)).filter(|&n| n > 0)?;
-            Some(i32::try_from(rest).unwrap_or(i32::MAX))
+            let past = at.abs_diff(start);
+            if past >= len {
+                return None;
+            }
+            Some(i32::try_from(len - past).unwrap_or(i32::MAX))
         };
         let width = rest(origin.x, clip.top_left.x, clip.size.width)?;
         let height = rest(origin.y, clip.top_left.y, clip.size.height)?;
