@@ -231,10 +231,13 @@ fn by_memset<const B: usize>(pixel: [u8; B]) -> bool {
 ///   vectorizes.
 ///
 /// Hosts once sent a colour of equal bytes to `memset` before the blocks:
-/// that test, made for every span, took 3 instructions a row on x86-64,
-/// and the blocks store as fast (a 320 x 240 `Rgb565Le` clear, one span
-/// of 153,600 bytes, took 2.32 us in black through `memset` and in red
-/// through the blocks, and takes 2.32 us in black through the blocks).
+/// that test, made for every span, took 3 instructions a row on x86-64
+/// (random triangles drawn by `draw_spans`, callgrind: tiny 485 a
+/// triangle → 464, small 1,117 → 1,090, medium 3,709 → 3,590, large
+/// 13,456 → 13,174, the mesh 999 → 977), and the blocks store as fast (a
+/// 320 x 240 `Rgb565Le` clear, one span of 153,600 bytes, took 2.32 us in
+/// black through `memset` and in red through the blocks, and takes 2.32
+/// us in black through the blocks).
 #[inline(always)]
 fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     let Some(&first) = pixel.first() else { return };
@@ -268,37 +271,21 @@ fn fill_overlapping<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     // 8, and `n` is whole pixels): the pattern lines up. Blocks are whole
     // arrays, one 16-byte store each on x86-64 (a block copied from a
     // slice went as two 8-byte stores, and the last one as an 8-byte
-    // store and four 2-byte ones).
-    if n < 16 {
-        // Short spans first: most rows of small triangles are, and each
-        // test on the way to them costs every such row two instructions
-        // (random triangles drawn by `draw_spans`, instructions counted by
-        // callgrind, with the `memset` test above gone too: tiny 485 a
-        // triangle → 460, small 1,117 → 1,074, medium 3,709 → 3,606, the
-        // mesh 999 → 961; large 13,456 → 13,407, its long spans now past
-        // two tests instead of one).
-        if n >= 8 {
-            overlapping_pair(bytes, &pattern[..8]);
-        } else if n >= 4 && 4 % B == 0 {
-            overlapping_pair(bytes, &pattern[..4]);
-        } else if B == 1 {
-            // Two or three 1-byte pixels (the framebuffer sends those to
-            // `memset`; this keeps the function whole for any `B`).
-            bytes.fill(pixel[0]);
-        } else if let Some(only) = bytes.first_chunk_mut::<B>() {
-            // One pixel: what is left of whole pixels of 2, 4 or 8 bytes
-            // under 8 bytes, or under 4 when `B` divides 4 (`n` is 0 or
-            // `B`). One store, not the loop's set-up for it (x86-64,
-            // random triangles drawn by `draw_spans`, instructions counted
-            // by callgrind: tiny 533 a triangle → 526, small 1,229 →
-            // 1,220, the mesh 1,101 → 1,090). And no pixel loop at all
-            // after it: the row loop that inlines this then stopped
-            // stepping that loop's row address, 2 instructions a row (tiny
-            // 530 → 515, small 1,180 → 1,127, medium 3,857 → 3,719, large
-            // 13,789 → 13,466, the mesh 1,056 → 1,009).
-            *only = pixel;
+    // store and four 2-byte ones). Long spans are tested first: testing
+    // the short ones first saved instructions on the small triangles'
+    // rows (callgrind, small 1,090 a triangle → 1,074, tiny 464 → 460)
+    // but took more time on the longer ones (`pools_ab.py`, 9 runs with
+    // loops aligned to 64 bytes: `draw_spans` medium 1.10x, large 1.05x
+    // and the mesh 1.08x the time).
+    if n > 64 {
+        let (blocks, rest) = bytes.as_chunks_mut::<16>();
+        blocks.fill(pattern);
+        if !rest.is_empty() {
+            if let Some(last) = bytes.last_chunk_mut::<16>() {
+                *last = pattern;
+            }
         }
-    } else if n <= 64 {
+    } else if n >= 16 {
         // Up to 64 bytes: the first and the last block, and if needed the
         // second and the one before the last, overlapping. No loop: the
         // loop's set-up and its remainder took about 20 instructions a row
@@ -319,14 +306,25 @@ fn fill_overlapping<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
                 *b = pattern;
             }
         }
-    } else {
-        let (blocks, rest) = bytes.as_chunks_mut::<16>();
-        blocks.fill(pattern);
-        if !rest.is_empty() {
-            if let Some(last) = bytes.last_chunk_mut::<16>() {
-                *last = pattern;
-            }
-        }
+    } else if n >= 8 {
+        overlapping_pair(bytes, &pattern[..8]);
+    } else if n >= 4 && 4 % B == 0 {
+        overlapping_pair(bytes, &pattern[..4]);
+    } else if B == 1 {
+        // Two or three 1-byte pixels (the framebuffer sends those to
+        // `memset`; this keeps the function whole for any `B`).
+        bytes.fill(pixel[0]);
+    } else if let Some(only) = bytes.first_chunk_mut::<B>() {
+        // One pixel: what is left of whole pixels of 2, 4 or 8 bytes under
+        // 8 bytes, or under 4 when `B` divides 4 (`n` is 0 or `B`). One
+        // store, not the loop's set-up for it (x86-64, random triangles
+        // drawn by `draw_spans`, instructions counted by callgrind: tiny
+        // 533 a triangle → 526, small 1,229 → 1,220, the mesh 1,101 →
+        // 1,090). And no pixel loop at all after it: the row loop that
+        // inlines this then stopped stepping that loop's row address, 2
+        // instructions a row (tiny 530 → 515, small 1,180 → 1,127, medium
+        // 3,857 → 3,719, large 13,789 → 13,466, the mesh 1,056 → 1,009).
+        *only = pixel;
     }
 }
 
