@@ -207,7 +207,7 @@ mod tests {
     /// against `div_euclid` in `i64`: every raw value near the ends of
     /// `i32` and near 0, and random ones.
     #[test]
-    fn centre_indices_are_exact_for_every_i32() {
+    fn centre_indices_are_exact_over_the_i32_range() {
         let near = |c: i64| (c - 9000..=c + 9000).filter_map(|v| i32::try_from(v).ok());
         let mut random = crate::raster::xorshift(0x2545_F491_4F6C_DD1D);
         let values = near(i64::from(i32::MIN))

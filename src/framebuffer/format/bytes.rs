@@ -194,8 +194,8 @@ fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Option<&mut [u
 
 /// Whether spans of `pixel` go as one `memset`: if all its bytes are equal
 /// (black, white, any grey), and on 32-bit ARM not for pixels of 2 or 4
-/// bytes (hosts do not ask for pixels of 2, 4 or 8 bytes: see
-/// [`fill_bytes`]). The `memset` there stores a word a loop step, where the word
+/// bytes (on hosts, [`fill_bytes`] sends pixels of 2, 4 or 8 bytes to
+/// its blocks without asking). The `memset` there stores a word a loop step, where the word
 /// paths store eight (`strd`) or a few overlapping ones: spans and
 /// rectangles of black took up to 2.8x the instructions of a colour's
 /// (Cortex-M4, `.ci/icount` with black: the 240 px triangle 52,683
@@ -470,7 +470,7 @@ fn fill_rows_bytes<'a, const B: usize>(
     let (Some(lo), Some(hi)) = (xs.start.checked_mul(B), xs.end.checked_mul(B)) else {
         return;
     };
-    if by_memset(pixel) || xs.len() < 16 || 4 % B != 0 || !cfg!(target_arch = "arm") {
+    if !cfg!(target_arch = "arm") || by_memset(pixel) || xs.len() < 16 || 4 % B != 0 {
         for row in rows {
             if let Some(bytes) = row.get_mut(lo..hi) {
                 fill_bytes(bytes, pixel);
