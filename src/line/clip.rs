@@ -43,14 +43,17 @@
 //! ```
 //!
 //! (for `dminor > 0`). Then `m` and `D` at the first visible step are
-//! computed exactly: in `i64` when `dmajor < 2^30`, else in `i128`
-//! (coordinates are any `i32`, so `dmajor < 2^32` and, with the clip's
-//! offsets first limited to `0..=dminor`, every product is below `2^67`).
+//! computed exactly in `u64` (coordinates are any `i32`, so `dmajor <
+//! 2^32`; with the clip's offsets first limited to `0..=dminor` and each
+//! quotient split into a whole part and a remainder, no product reaches
+//! `2^64`: see `Canonical::entry`).
 //! A line whose ends lie inside the clip rectangle takes the textbook
 //! start, `D = 2 dminor - dmajor - b`, without any division or clip
 //! arithmetic, after a 32-bit test of its ends against the clip.
 
-use crate::raster::wide::Wide;
+use core::num::NonZeroU64;
+
+use crate::raster::wide::div_rem_u64;
 
 use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 
@@ -216,12 +219,7 @@ impl Canonical {
             return None;
         }
         let (m_lo, m_hi) = (m_lo.max(0), m_hi.min(self.dminor));
-        let (lo, hi, m, d) = if self.dmajor < 1 << 30 {
-            // |2 dmajor m| < 2^62.
-            self.entry::<i64>(lo, hi, m_lo, m_hi)?
-        } else {
-            self.entry::<i128>(lo, hi, m_lo, m_hi)?
-        };
+        let (lo, hi, m, d) = self.entry(lo, hi, m_lo, m_hi)?;
         self.steps(lo, hi, m, d)
     }
 
@@ -238,46 +236,77 @@ impl Canonical {
         })
     }
 
-    /// The steps `lo..=hi` narrowed to offsets `m_lo..=m_hi`, the offset
-    /// and the decision variable at the first: `(lo, hi, m, D)`, computed
-    /// in `W`.
-    fn entry<W: Wide + From<i64>>(
-        &self,
-        lo: i64,
-        hi: i64,
-        m_lo: i64,
-        m_hi: i64,
-    ) -> Option<(i64, i64, i64, i64)> {
-        let w = W::from;
-        let (mut lo, mut hi) = (w(lo), w(hi));
+    /// The steps `lo..=hi` (within `0..=dmajor`) narrowed to offsets
+    /// `m_lo..=m_hi` (within `0..=dminor`), the offset and the decision
+    /// variable at the first: `(lo, hi, m, D)`.
+    ///
+    /// In `u64` for every line of `i32` ends (`dmajor < 2^32`), with no
+    /// product past `2^64`: the quotients of the module docs are split
+    /// into whole parts and remainders first. With `dmajor = Q dminor + R`
+    /// (`R < dminor`),
+    ///
+    /// ```text
+    /// first(m) = ceil((2 dmajor m - dmajor + b) / (2 dminor))
+    ///          = Q m + ceil((2 R m - dmajor + b) / (2 dminor))
+    /// ```
+    ///
+    /// and with `R m = Q2 dminor + R2` (`R m < 2^64` for `m <= dminor`),
+    /// `first(m) = Q m + Q2 + ceil((2 R2 + b - dmajor) / (2 dminor))`,
+    /// whose last numerator lies within `-dmajor..dminor`. Likewise, with
+    /// `dminor lo = Q3 dmajor + R3`, `m(lo) = Q3 + floor(U / (2 dmajor))`
+    /// and its remainder `U mod 2 dmajor` for `U = 2 R3 + dmajor - b`,
+    /// which lies within `0..3 dmajor`.
+    fn entry(&self, lo: i64, hi: i64, m_lo: i64, m_hi: i64) -> Option<(i64, i64, i64, i64)> {
+        let u = |v: i64| u64::try_from(v).ok();
         let (dmaj, dmin, b) = (
-            w(self.dmajor),
-            w(self.dminor),
-            w(i64::from(self.minor_step > 0)),
+            u(self.dmajor)?,
+            u(self.dminor)?,
+            u64::from(self.minor_step > 0),
         );
-        let two = w(2);
-        if dmin == w(0) {
-            // m is 0 everywhere, and 0 is in m_lo..=m_hi.
-        } else {
-            // First step with m(k) >= m: ceil((2 dmaj m - dmaj + b) / (2 dmin)).
-            let first = |m: i64| {
-                let (q, _) = (-(two * dmaj * w(m) - dmaj + b)).div_rem_floor(two * dmin)?;
-                Some(-q)
+        let (mut lo, mut hi) = (u(lo)?, u(hi)?);
+        if let Some(nonzero) = NonZeroU64::new(dmin) {
+            // Q, R below 2^32.
+            let (q, r) = div_rem_u64(dmaj, nonzero);
+            // The first step whose offset is at least m, for 1 <= m <=
+            // dminor (offset 0 is reached at step 0).
+            let two = NonZeroU64::new(2 * dmin)?;
+            let first = |m: u64| {
+                let (q2, r2) = div_rem_u64(r * m, nonzero);
+                // 2 R2 + b <= 2 dminor - 1: the last ceiling is 1 if its
+                // numerator is positive, else minus the floor of its
+                // negation. first(m) >= 1: the offset is 0 at step 0.
+                let whole = q * m + q2;
+                match dmaj.checked_sub(2 * r2 + b) {
+                    Some(minus) => whole.checked_sub(div_rem_u64(minus, two).0),
+                    None => Some(whole + 1),
+                }
             };
-            lo = lo.max(first(m_lo)?);
-            hi = hi.min(first(m_hi + 1)? - w(1));
+            if m_lo > 0 {
+                lo = lo.max(first(u(m_lo)?)?);
+            }
+            if m_hi < self.dminor {
+                hi = hi.min(first(u(m_hi)? + 1)? - 1);
+            }
         }
         if lo > hi {
             return None;
         }
-        let (m, d) = if dmaj == w(0) {
-            (w(0), w(0))
-        } else {
-            let num = two * dmin * lo + dmaj - b;
-            let (m, r) = num.div_rem_floor(two * dmaj)?;
-            (m, r + two * dmin - two * dmaj)
+        let (m, d) = match NonZeroU64::new(dmaj) {
+            // A single pixel: lo = hi = 0 and dminor = 0.
+            None => (0, 0),
+            Some(nonzero) => {
+                let (q3, r3) = div_rem_u64(dmin * lo, nonzero);
+                let t = 2 * r3 + dmaj - b;
+                let (m, r) = match t.checked_sub(2 * dmaj) {
+                    Some(r) => (q3 + 1, r),
+                    None => (q3, t),
+                };
+                let i = |v: u64| i64::try_from(v).ok();
+                (i(m)?, i(r)? + 2 * self.dminor - 2 * self.dmajor)
+            }
         };
-        Some((lo.to_i64()?, hi.to_i64()?, m.to_i64()?, d.to_i64()?))
+        let i = |v: u64| i64::try_from(v).ok();
+        Some((i(lo)?, i(hi)?, m, d))
     }
 }
 

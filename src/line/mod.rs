@@ -24,7 +24,7 @@
 //! one compare per pixel, no multiply, divide or float. The line is
 //! clipped to the target's bounding box *before* stepping: the first and
 //! last visible step and the exact decision variable at the first are
-//! computed in `i128`, so a line from `i32::MIN` to `i32::MAX` costs no
+//! computed exactly in 64 bits, so a line from `i32::MIN` to `i32::MAX` costs no
 //! more than its visible pixels, and lights exactly the pixels the
 //! unclipped line would light inside the target.
 //!

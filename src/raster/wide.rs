@@ -1,14 +1,19 @@
 //! The one wide-integer abstraction of the raster core.
 //!
-//! Every exact computation in the crate (edge setup, orientation, line
-//! clipping) is written once, generic over [`Wide`], and run in the
-//! narrowest of `i32`, `i64` and `i128` that the shape's own bounds allow.
+//! Every exact computation of the raster core (edge setup, orientation)
+//! is written once, generic over [`Wide`], and run in the narrowest of
+//! `i32`, `i64` and `i128` that the shape's own bounds allow; line
+//! clipping splits its quotients so that `u64` holds them all, and
+//! divides with [`div_rem_u64`], the same division as the 64-bit `Wide`.
 //! Callers pick the width from a stated bound, never by trying and
 //! wrapping: nothing here relies on wraparound, and every conversion down
 //! is checked.
 
 use core::ops::{Add, Mul, Neg, Shr, Sub};
-use core::{fmt::Debug, num::NonZeroU32};
+use core::{
+    fmt::Debug,
+    num::{NonZeroU32, NonZeroU64},
+};
 
 /// A signed integer the raster core computes in: `i32`, `i64` or `i128`.
 pub(crate) trait Wide:
@@ -101,34 +106,69 @@ impl_wide!(
 );
 
 /// `floor(n / d)` and `n - d floor(n / d)` for `d > 0`, for 32-bit
-/// targets: one hardware division when both fit 32 bits, else restoring
-/// shift-and-subtract, one step per bit of the quotient.
+/// targets: the magnitudes divided by [`div_rem_u64`], the signs applied
+/// after.
 ///
 /// The library routine a 64-bit division links there takes about 1 KB of
-/// flash (864 + 136 bytes on a Cortex-M4 at opt-level "s"); this takes
-/// 364. Only shapes off the 32-bit path divide in 64 bits (a triangle
-/// over 128 px a side, an edge reaching far off the screen, a line
-/// clipped to the screen), once or twice per edge, where the quotient's
-/// bits (about 14 instructions each) are small beside the pixels they
-/// light: on the Cortex-M4, a line with ends 10^6 px off the screen
-/// costs 13 % more than with the library routine, the 64-bit triangle
-/// `HUGE` under 1 % more. Long division in 16-bit digits on the hardware
-/// divider (Knuth's algorithm D) came within 3 % of the library's speed
-/// (that line 2.4 % slower, `HUGE` 0.2 % faster) and took 768 bytes.
+/// flash (864 + 136 bytes on a Cortex-M4 at opt-level "s"); this and
+/// [`div_rem_u64`] take 364. Only shapes off the 32-bit path divide in 64
+/// bits (a triangle over 128 px a side, an edge reaching far off the
+/// screen, a line clipped to the screen), once or twice per edge, where
+/// the quotient's bits (about 14 instructions each) are small beside the
+/// pixels they light: on the Cortex-M4, a line with ends 10^6 px off the
+/// screen costs 13 % more than with the library routine, the 64-bit
+/// triangle `HUGE` under 1 % more. Long division in 16-bit digits on the
+/// hardware divider (Knuth's algorithm D) came within 3 % of the
+/// library's speed (that line 2.4 % slower, `HUGE` 0.2 % faster) and took
+/// 768 bytes.
 #[inline(never)]
 fn floor_div_rem_by_shifts(n: i64, d: i64) -> (i64, i64) {
     let (m, dd) = (n.unsigned_abs(), d.unsigned_abs());
-    let (q, r) = match (
-        u32::try_from(m),
-        u32::try_from(dd).ok().and_then(NonZeroU32::new),
+    let (q, r) = divide_u64(m, dd);
+    // n = -m: floor(-m / d) = -ceil(m / d) = -(q + [r > 0]), remainder
+    // d - r. Both fit i64: q + [r > 0] <= 2^63, and r < d.
+    let ceil = q + u64::from(n < 0 && r > 0);
+    let (q, r) = match n < 0 {
+        true => (
+            0i64.checked_sub_unsigned(ceil),
+            if r > 0 { dd - r } else { 0 },
+        ),
+        false => (i64::try_from(q).ok(), r),
+    };
+    (q.unwrap_or(i64::MIN), i64::try_from(r).unwrap_or(0))
+}
+
+/// `n / d` and `n % d`: the operators on 64-bit targets; on 32-bit ones
+/// [`divide_u64`], out of line (the flash of
+/// [`floor_div_rem_by_shifts`]: a firmware that links both has the loop
+/// twice, one that links one of them, as a firmware of flat triangles
+/// does, has it once, with no call between).
+#[cfg_attr(target_pointer_width = "32", inline(never))]
+#[cfg_attr(not(target_pointer_width = "32"), inline(always))]
+pub(crate) fn div_rem_u64(n: u64, d: NonZeroU64) -> (u64, u64) {
+    match cfg!(target_pointer_width = "32") {
+        true => divide_u64(n, d.get()),
+        false => (n / d, n % d),
+    }
+}
+
+/// `n / d` and `n % d` for `d > 0`, for 32-bit targets: one hardware
+/// division when both fit 32 bits, else restoring shift-and-subtract, one
+/// step per bit of the quotient.
+#[inline(always)]
+fn divide_u64(n: u64, d: u64) -> (u64, u64) {
+    debug_assert!(d > 0);
+    match (
+        u32::try_from(n),
+        u32::try_from(d).ok().and_then(NonZeroU32::new),
     ) {
-        (Ok(m), Some(dd)) => (u64::from(m / dd), u64::from(m % dd)),
+        (Ok(n), Some(d)) => (u64::from(n / d), u64::from(n % d)),
         _ => {
-            // Align the divisor's top bit with the dividend's (when m >=
-            // dd, so the shift loses nothing), then take one quotient bit
+            // Align the divisor's top bit with the dividend's (when n >=
+            // d, so the shift loses nothing), then take one quotient bit
             // a step: `r < 2 step` throughout.
-            let shift = dd.leading_zeros().saturating_sub(m.leading_zeros());
-            let (mut step, mut r, mut q) = (dd << shift, m, 0u64);
+            let shift = d.leading_zeros().saturating_sub(n.leading_zeros());
+            let (mut step, mut r, mut q) = (d << shift, n, 0u64);
             let mut bits = shift + 1;
             while bits > 0 {
                 q <<= 1;
@@ -141,18 +181,7 @@ fn floor_div_rem_by_shifts(n: i64, d: i64) -> (i64, i64) {
             }
             (q, r)
         }
-    };
-    // n = -m: floor(-m / d) = -ceil(m / d) = -(q + [r > 0]), remainder
-    // d - r. Both fit i64: q + [r > 0] <= 2^63, and r < d.
-    let ceil = q + u64::from(n < 0 && r > 0);
-    let (q, r) = match n < 0 {
-        true => (
-            0i64.checked_sub_unsigned(ceil),
-            if r > 0 { dd - r } else { 0 },
-        ),
-        false => (i64::try_from(q).ok(), r),
-    };
-    (q.unwrap_or(i64::MIN), i64::try_from(r).unwrap_or(0))
+    }
 }
 
 impl_wide!(i128, u128, |a: i32, b: i32, _| Some(

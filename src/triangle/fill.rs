@@ -127,7 +127,7 @@ fn place_checked(v: &[Vertex; 3], clip: &Rectangle) -> Option<Placed> {
 /// the edges are set up once, and each window continues where the last
 /// one stopped, so a triangle drawn band by band costs what it costs
 /// drawn whole. The same spans as [`triangle_spans`] (the same edges, the
-/// same [`rows`] loop); only triangles on the 32-bit path are kept, the
+/// same [`rows`](crate::raster::walk::rows) loop); only triangles on the 32-bit path are kept, the
 /// rest are drawn whole in each window by [`triangle_spans`].
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct TriangleRows {
@@ -253,7 +253,7 @@ fn narrow_edges(small: bool) -> impl Fn((i32, i32), (i32, i32)) -> Option<Edge<i
 /// degenerate triangle's edges cross each row at the same point, and its
 /// spans are empty). The lower short edge takes over from the upper one
 /// inside the loop. For a triangle of a few rows this saves the
-/// orientation and the two calls into [`rows`] with their edges passed
+/// orientation and the two calls into [`rows`](crate::raster::walk::rows) with their edges passed
 /// through memory: random 4 px triangles take about 10 % less time on
 /// x86-64 (the tiny pool of `benches/pools.rs`, median of 5 runs: 46 ns
 /// a triangle through [`walk`], 41 through this). Taller ones keep [`walk`], whose out-of-line row loop has
