@@ -209,7 +209,10 @@ pub(crate) fn div_rem_u128(n: u128, d: NonZeroU128) -> (u128, u128) {
 #[inline(always)]
 fn divide_u128(n: u128, d: u128) -> (u128, u128) {
     debug_assert!(d > 0);
-    match (u64::try_from(n), u64::try_from(d).ok().and_then(NonZeroU64::new)) {
+    match (
+        u64::try_from(n),
+        u64::try_from(d).ok().and_then(NonZeroU64::new),
+    ) {
         (Ok(n), Some(d)) => {
             let (q, r) = div_rem_u64(n, d);
             (q.into(), r.into())

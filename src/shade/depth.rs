@@ -9,7 +9,7 @@ use embedded_graphics_core::{
     Drawable,
 };
 
-use super::{round_fixed, Frame, GouraudSetup, GouraudTriangle, Linear, ShadeColor};
+use super::{round_fixed, shaded_spans, Frame, GouraudSetup, GouraudTriangle, Linear, ShadeColor};
 use crate::{clip::Bounds, span::Span, triangle::FilledTriangle};
 
 /// The depth a cleared [`DepthBuffer`] holds: farther than anything drawn
@@ -300,7 +300,7 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, FilledTriangle<C>> {
         };
         let z = depth_setup(&frame, self.z);
         let color = self.shaded.color;
-        self.shaded.triangle.for_each_span(&clip, |span| {
+        shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
             let [z0] = z.at(frame.lambdas(span.x_start, span.y));
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
                 let run = Span {
@@ -330,7 +330,7 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, GouraudTriangle<C>> {
         };
         let frame = setup.frame;
         let z = depth_setup(&frame, self.z);
-        self.shaded.triangle.for_each_span(&clip, |span| {
+        shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
             let l = frame.lambdas(span.x_start, span.y);
             let [z0] = z.at(l);
             self.depth.test_span(span, z0, z.step[0], |offset, len| {

@@ -352,11 +352,25 @@ impl<C: ShadeColor> GouraudTriangle<C> {
         let Some(setup) = GouraudSetup::new(self) else {
             return Ok(());
         };
-        self.triangle.for_each_span(clip, |span| {
+        shaded_spans(&self.triangle, clip, &mut |span| {
             let l = setup.frame.lambdas(span.x_start, span.y);
             f(span, &mut setup.ramp(l, 0, span.len()))
         })
     }
+}
+
+/// `triangle`'s spans inside `clip`, through one copy of the triangle
+/// walk for every kind of shading (one per error type), not one per
+/// caller's closure: a shaded span costs far more than the call through
+/// the `dyn` reference, while each copy of the walk is about 3 KB of flash
+/// on a Cortex-M4.
+#[inline(never)]
+pub(crate) fn shaded_spans<E>(
+    triangle: &Triangle,
+    clip: &embedded_graphics_core::primitives::Rectangle,
+    f: &mut dyn FnMut(Span) -> Result<(), E>,
+) -> Result<(), E> {
+    triangle.for_each_span(clip, f)
 }
 
 impl<C: ShadeColor> Drawable for GouraudTriangle<C> {
@@ -371,7 +385,7 @@ impl<C: ShadeColor> Drawable for GouraudTriangle<C> {
             return Ok(());
         };
         let clip = target.bounding_box();
-        self.triangle.for_each_span(&clip, |span| {
+        shaded_spans(&self.triangle, &clip, &mut |span| {
             let l = setup.frame.lambdas(span.x_start, span.y);
             target.fill_contiguous(&span.rect(), setup.ramp(l, 0, span.len()))
         })
