@@ -72,14 +72,26 @@ fn time(mut draw: impl FnMut(&mut Fb) -> u64, tris: usize) -> (f64, u64) {
     (samples[REPEATS / 2], px)
 }
 
+/// Each span goes to `fill_solid` from a closure marked `#[inline(always)]`,
+/// so that every variant's row loop has it inlined: without the mark, the
+/// compiler inlined it into `walk`'s single loop but called it out of
+/// line from the exact walk's four (its 32-bit, checked, 64-bit and tiny
+/// paths), and the table measured that call, about 14 instructions a
+/// row, rather than the algorithms (BENCHMARKS.md, "Speed for accuracy").
 fn draw_variant(v: Variant, p: SubpixelPrecision, tris: &[Triangle], fb: &mut Fb) -> u64 {
     let clip = fb.bounding_box();
     let mut px = 0u64;
     for t in tris {
-        v.spans(p, t, &clip, |s: Span| {
-            px += u64::from(s.len());
-            let _ = fb.fill_solid(&s.rect(), Rgb565::RED);
-        });
+        v.spans(
+            p,
+            t,
+            &clip,
+            #[inline(always)]
+            |s: Span| {
+                px += u64::from(s.len());
+                let _ = fb.fill_solid(&s.rect(), Rgb565::RED);
+            },
+        );
     }
     px
 }

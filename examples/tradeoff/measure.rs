@@ -46,10 +46,17 @@ impl Variant {
         let mut f = f;
         match self {
             Variant::Lib(a) => {
-                let _ = t.for_each_span_with(a, p, clip, |s| {
-                    f(s);
-                    Ok::<(), ()>(())
-                });
+                // Inlined like the caller's closure (see `draw_variant`).
+                let _ = t.for_each_span_with(
+                    a,
+                    p,
+                    clip,
+                    #[inline(always)]
+                    |s| {
+                        f(s);
+                        Ok::<(), ()>(())
+                    },
+                );
             }
             Variant::Seed000 => seed000(&t.snapped(p), clip, f),
         }
