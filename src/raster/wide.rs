@@ -161,65 +161,72 @@ fn floor_div_rem_by_shifts(n: i64, d: i64) -> (i64, i64) {
     (q.unwrap_or(i64::MIN), i64::try_from(r).unwrap_or(0))
 }
 
-/// `n / d` and `n % d`: the operators on 64-bit targets; on 32-bit ones
-/// [`divide_u64`], out of line (the flash of
-/// [`floor_div_rem_by_shifts`]: a firmware that links both has the loop
-/// twice, one that links one of them, as a firmware of flat triangles
-/// does, has it once, with no call between).
-#[cfg_attr(target_pointer_width = "32", inline(never))]
-#[cfg_attr(not(target_pointer_width = "32"), inline(always))]
-pub(crate) fn div_rem_u64(n: u64, d: NonZeroU64) -> (u64, u64) {
-    match cfg!(target_pointer_width = "32") {
-        true => divide_u64(n, d.get()),
-        false => (n / d, n % d),
-    }
-}
-
-/// `n / d` and `n % d` for `d > 0`, for 32-bit targets: one hardware
-/// division when both fit 32 bits, else restoring shift-and-subtract, one
-/// step per bit of the quotient.
-#[inline(always)]
-fn divide_u64(n: u64, d: u64) -> (u64, u64) {
-    debug_assert!(d > 0);
-    match (
-        u32::try_from(n),
-        u32::try_from(d).ok().and_then(NonZeroU32::new),
-    ) {
-        (Ok(n), Some(d)) => (u64::from(n / d), u64::from(n % d)),
-        _ => shift_subtract!(n, d),
-    }
-}
-
-/// `n / d` and `n % d` in `u128`, for `d > 0`: the operators on 64-bit
-/// targets; on 32-bit ones [`div_rem_u64`] when both fit 64 bits, else
-/// restoring shift-and-subtract, out of line. A 32-bit target has no
-/// 128-bit division routine: the compiler expands each `u128` or `i128`
-/// division in place, about 1 KB of flash a site on a Cortex-M4.
-#[cfg_attr(target_pointer_width = "32", inline(never))]
-#[cfg_attr(not(target_pointer_width = "32"), inline(always))]
-pub(crate) fn div_rem_u128(n: u128, d: NonZeroU128) -> (u128, u128) {
-    match cfg!(target_pointer_width = "32") {
-        true => divide_u128(n, d.get()),
-        false => (n / d, n % d),
-    }
-}
-
-/// `n / d` and `n % d` for `d > 0`, for 32-bit targets: [`div_rem_u64`]
-/// when both fit 64 bits, else restoring shift-and-subtract.
-#[inline(always)]
-fn divide_u128(n: u128, d: u128) -> (u128, u128) {
-    debug_assert!(d > 0);
-    match (
-        u64::try_from(n),
-        u64::try_from(d).ok().and_then(NonZeroU64::new),
-    ) {
-        (Ok(n), Some(d)) => {
-            let (q, r) = div_rem_u64(n, d);
-            (q.into(), r.into())
+/// `$name(n, d)`, `n / d` and `n % d` in `$t` for a nonzero `d`: the
+/// operators on 64-bit targets; on 32-bit ones `$core`, out of line.
+/// `$core(n, d)` (for `d > 0`) divides in the half width `$half` by
+/// `$half_div` when both operands fit it, else by restoring
+/// shift-and-subtract.
+macro_rules! unsigned_division {
+    ($(#[$doc:meta])* $name:ident, $core:ident, $t:ty, $nonzero:ty, $half:ty, $half_nonzero:ty, $half_div:expr) => {
+        $(#[$doc])*
+        #[cfg_attr(target_pointer_width = "32", inline(never))]
+        #[cfg_attr(not(target_pointer_width = "32"), inline(always))]
+        pub(crate) fn $name(n: $t, d: $nonzero) -> ($t, $t) {
+            match cfg!(target_pointer_width = "32") {
+                true => $core(n, d.get()),
+                false => (n / d, n % d),
+            }
         }
-        _ => shift_subtract!(n, d),
-    }
+
+        /// The division of 32-bit targets: in the half width when both
+        /// operands fit it, else restoring shift-and-subtract.
+        #[inline(always)]
+        fn $core(n: $t, d: $t) -> ($t, $t) {
+            debug_assert!(d > 0);
+            match (
+                <$half>::try_from(n),
+                <$half>::try_from(d).ok().and_then(<$half_nonzero>::new),
+            ) {
+                (Ok(n), Some(d)) => {
+                    let (q, r): ($half, $half) = $half_div(n, d);
+                    (q.into(), r.into())
+                }
+                _ => shift_subtract!(n, d),
+            }
+        }
+    };
 }
+
+unsigned_division!(
+    /// `n / d` and `n % d` in `u64`. On 32-bit targets one hardware
+    /// division when both fit 32 bits; out of line there, it has the flash
+    /// of [`floor_div_rem_by_shifts`] (which inlines `divide_u64`): a
+    /// firmware that links both has the loop twice, one that links one of
+    /// them, as a firmware of flat triangles does, has it once, with no
+    /// call between.
+    div_rem_u64,
+    divide_u64,
+    u64,
+    NonZeroU64,
+    u32,
+    NonZeroU32,
+    |n: u32, d: NonZeroU32| (n / d, n % d)
+);
+
+unsigned_division!(
+    /// `n / d` and `n % d` in `u128`. A 32-bit target has no 128-bit
+    /// division routine: the compiler expands each `u128` or `i128`
+    /// division in place, about 1 KB of flash a site on a Cortex-M4; this
+    /// one is out of line there, through [`div_rem_u64`] when both fit 64
+    /// bits.
+    div_rem_u128,
+    divide_u128,
+    u128,
+    NonZeroU128,
+    u64,
+    NonZeroU64,
+    div_rem_u64
+);
 
 /// `floor(n / d)` for `d > 0`, through [`div_rem_u128`].
 fn floor_div_i128(n: i128, d: NonZeroU128) -> i128 {
