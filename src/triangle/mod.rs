@@ -146,7 +146,7 @@ impl Triangle {
     /// each span sent to a framebuffer's `fill_solid`: 2,534 instructions
     /// a triangle without the mark, 2,197 with it). Drawing through
     /// [`Drawable::draw`](embedded_graphics_core::Drawable::draw) or
-    /// [`SpanDrawable::draw_spans`](crate::SpanDrawable::draw_spans)
+    /// [`draw_spans`](crate::SpanDrawable::draw_spans)
     /// needs no mark.
     ///
     /// # Examples
