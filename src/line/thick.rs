@@ -31,7 +31,7 @@ use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
 
 use crate::{
     clip::Bounds,
-    raster::wide::div_sqrt,
+    raster::wide::{div_sqrt, round_div},
     vertex::{Vertex, ONE},
 };
 
@@ -151,7 +151,8 @@ fn cut(
         return None;
     }
     let at = |t: (i128, i128)| {
-        let lerp = |a: i128, z: i128| a + ((z - a) * t.0 * 2 + t.1).div_euclid(2 * t.1);
+        // a + round((z - a) t), halves up (t.1 > 0).
+        let lerp = |a: i128, z: i128| a + round_div((z - a) * t.0, t.1);
         (lerp(p0.0, p1.0), lerp(p0.1, p1.1))
     };
     Some((at(t0), at(t1)))

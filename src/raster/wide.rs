@@ -228,21 +228,29 @@ unsigned_division!(
     div_rem_u64
 );
 
-/// `floor(n / d)` for `d > 0`, through [`div_rem_u128`].
-fn floor_div_i128(n: i128, d: NonZeroU128) -> i128 {
+/// `floor(n / d)` and `n - d floor(n / d)` for `d > 0`, through
+/// [`div_rem_u128`] (`None` for `d <= 0`): the 128-bit `Wide`'s division,
+/// so that 32-bit targets divide in one place.
+fn floor_div_rem_i128(n: i128, d: i128) -> Option<(i128, i128)> {
+    let d = NonZeroU128::new(u128::try_from(d).ok()?)?;
     let (q, r) = div_rem_u128(n.unsigned_abs(), d);
-    // For n >= 0, q <= n < 2^127. For n = -m, floor(-m / d) = -(q + [r >
-    // 0]) >= -2^127.
-    match n < 0 {
-        true => 0i128.checked_sub_unsigned(q + u128::from(r > 0)),
-        false => i128::try_from(q).ok(),
-    }
-    .unwrap_or(i128::MIN)
+    // For n >= 0, q <= n < 2^127 and r < d. For n = -m, floor(-m / d) =
+    // -(q + [r > 0]) >= -2^127, and the remainder d - r (or 0) < d.
+    Some(match n < 0 {
+        true => (
+            0i128.checked_sub_unsigned(q + u128::from(r > 0))?,
+            i128::try_from(if r > 0 { d.get() - r } else { 0 }).ok()?,
+        ),
+        false => (i128::try_from(q).ok()?, i128::try_from(r).ok()?),
+    })
 }
 
-impl_wide!(i128, u128, |a: i32, b: i32, _| Some(
-    i128::from(a) - i128::from(b)
-));
+impl_wide!(
+    i128,
+    u128,
+    |a: i32, b: i32, _| Some(i128::from(a) - i128::from(b)),
+    |n: i128, d: i128| floor_div_rem_i128(n, d).unwrap_or((0, 0))
+);
 
 /// A [`Wide`] with a type twice as wide, which holds the product of any
 /// two of its values: `i32` (products in `i64`) and `i64` (in `i128`).
@@ -306,11 +314,8 @@ pub(crate) fn orientation<T: Narrow>(a: (T, T), b: (T, T), c: (T, T)) -> T::Doub
 /// callers keep `2 |n| + |d|` within `i128`.
 pub(crate) fn round_div(n: i128, d: i128) -> i128 {
     let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
-    match NonZeroU128::new(2 * d.unsigned_abs()) {
-        Some(two_d) => floor_div_i128(2 * n + d, two_d),
-        // Unreachable (`d != 0`); no pixel depends on it.
-        None => 0,
-    }
+    // Unreachable with d = 0 (the callers' bound); no pixel depends on it.
+    floor_div_rem_i128(2 * n + d, 2 * d).map_or(0, |(q, _)| q)
 }
 
 /// `floor(sqrt(n))`: the library's on 64-bit targets; on 32-bit ones
