@@ -76,8 +76,10 @@ fn time(mut draw: impl FnMut(&mut Fb) -> u64, tris: usize) -> (f64, u64) {
 /// so that every variant's row loop has it inlined: without the mark, the
 /// compiler inlined it into `walk`'s single loop but called it out of
 /// line from the exact walk's four (its 32-bit, checked, 64-bit and tiny
-/// paths), and the table measured that call, about 14 instructions a
-/// row, rather than the algorithms (BENCHMARKS.md, "Speed for accuracy").
+/// paths), and the table measured that call, about 12 instructions a
+/// row (callgrind: 2,534 against 2,197 a 32 px triangle of about 28
+/// rows), rather than the algorithms (BENCHMARKS.md, "Speed for
+/// accuracy").
 fn draw_variant(v: Variant, p: SubpixelPrecision, tris: &[Triangle], fb: &mut Fb) -> u64 {
     let clip = fb.bounding_box();
     let mut px = 0u64;
