@@ -22,7 +22,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::prelude::rust_2021::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::{format, writeln};
+use std::{format, vec, writeln};
 
 use embedded_graphics_core::geometry::OriginDimensions;
 
