@@ -125,7 +125,7 @@
     rustdoc::broken_intra_doc_links
 )]
 
-#[cfg(feature = "std")]
+#[cfg(any(test, feature = "std"))]
 extern crate std;
 
 pub mod band;

@@ -5,6 +5,8 @@
 
 #[path = "delaunay/check.rs"]
 mod check;
+// The point-file command line: the simulator's.
+#[cfg(feature = "sim")]
 #[path = "delaunay/cli.rs"]
 mod cli;
 mod common;

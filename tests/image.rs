@@ -1,6 +1,9 @@
 //! The framebuffer as an embedded-graphics image (`ImageDrawable`) and as
 //! a PNG file, checked pixel by pixel against the framebuffer's contents.
 
+// The simulator's display and its PNG export.
+#![cfg(feature = "sim")]
+
 use embedded_graphics::{image::Image, pixelcolor::Gray8, prelude::*, primitives::Rectangle};
 use embedded_raster::{
     framebuffer::{buffer_size, Gray8Bytes},
