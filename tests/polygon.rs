@@ -215,7 +215,7 @@ proptest! {
         let (lo, hi) = poly.iter().map(|c| c.raw()).fold(((i32::MAX, i32::MAX), (i32::MIN, i32::MIN)), |(lo, hi), (x, y)| ((lo.0.min(x), lo.1.min(y)), (hi.0.max(x), hi.1.max(y))));
         let (x0, y0) = (i64::from(lo.0 >> 12) - 1, i64::from(lo.1 >> 12) - 1);
         let (w, h) = ((i64::from(hi.0 >> 12) - x0 + 2) as usize, (i64::from(hi.1 >> 12) - y0 + 2) as usize);
-        if w * h <= 4096 {
+        if w.checked_mul(h).is_some_and(|area| area <= 4096) {
             assert_same(&scanline(&poly, even_odd, x0, y0, w, h), &reference_fill(&poly, even_odd, x0, y0, w, h), &format!("whole {poly:?}"));
         }
     }
