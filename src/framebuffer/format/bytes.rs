@@ -194,9 +194,10 @@ fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Option<&mut [u
 
 /// Whether spans of `pixel` go as one `memset`: if all its bytes are equal
 /// (black, white, any grey), and on 32-bit ARM not for pixels of 2 or 4
-/// bytes (on hosts, [`fill_bytes`] sends pixels of 2, 4 or 8 bytes to
-/// its blocks without asking). The `memset` there stores a word a loop step, where the word
-/// paths store eight (`strd`) or a few overlapping ones: spans and
+/// bytes. (On hosts, [`fill_bytes`] sends pixels of 2, 4 or 8 bytes to
+/// its blocks without asking.) On 32-bit ARM `memset` stores a word a
+/// loop step, where the word paths store eight (`strd`) or a few
+/// overlapping ones: spans and
 /// rectangles of black took up to 2.8x the instructions of a colour's
 /// (Cortex-M4, `.ci/icount` with black: the 240 px triangle 52,683
 /// instructions through `memset`, 30,240 through the word path; 200 x 200
