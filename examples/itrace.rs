@@ -16,8 +16,11 @@
 //!    the two chains of edges;
 //! 6. `.ci/icount`'s pentagram, 220 px, even-odd: the active edge table;
 //! 7. a polyline of 21 points in a zigzag, 8 px wide with mitred joins
-//!    (the host bench's, `benches/lines.rs`): its pieces walked in tiles;
-//! 8. the same 20 segments drawn as separate thick lines.
+//!    (the host bench's, `benches/lines.rs`), through the framebuffer's
+//!    span sink: its pieces written whole, overlapping;
+//! 8. the same polyline through `draw` (the framebuffer as a
+//!    `DrawTarget`): each pixel once, its pieces walked in masked tiles;
+//! 9. the same 20 segments drawn as separate thick lines.
 //!
 //! Built for the host, it does nothing.
 
@@ -36,8 +39,8 @@ mod target {
     use core::hint::black_box;
 
     use cortex_m_rt::entry;
-    use embedded_graphics_core::geometry::Point;
     use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+    use embedded_graphics_core::{geometry::Point, Drawable};
     use embedded_raster::{Join, Line, Polyline, Span, SpanDrawable, Triangle};
 
     use super::builtin_scene::{irregular, SceneBuffer, SCREEN};
@@ -108,6 +111,9 @@ mod target {
             .join(Join::Miter);
         begin();
         let Ok(()) = black_box(&stroke).draw_spans(black_box(FB));
+        end();
+        begin();
+        let Ok(()) = black_box(&stroke).draw(black_box(FB));
         end();
         let lines: [_; 20] = core::array::from_fn(|k| {
             Line::new(zigzag[k], zigzag[k + 1])

@@ -3,14 +3,20 @@
 //! rectangles and its join regions, tested at each pixel centre in `f64`
 //! (pixels within `EPS` of the union's boundary are skipped), written
 //! from the definition without calling the code under test. Every pixel
-//! must be written at most once, none outside the display.
+//! must be written at most once, none outside the display. Drawn into a
+//! sink on which overdraw is invisible (as a framebuffer is), where the
+//! pieces are written whole and overlap, the same pixels must be lit.
 //!
 //! Case counts follow `PROPTEST_CASES` (proptest's default, 256, when
 //! unset).
 #![cfg(feature = "sim")]
 
-use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
-use embedded_raster::{sim::SimDisplay, Join, Line, Polygon, Polyline, Triangle, Vertex};
+use core::convert::Infallible;
+
+use embedded_graphics_core::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+use embedded_raster::{
+    sim::SimDisplay, Join, Line, Polygon, Polyline, Span, SpanDrawable, SpanSink, Triangle, Vertex,
+};
 use proptest::prelude::*;
 
 /// Pixels whose centre is within this many px of the reference's
@@ -258,6 +264,43 @@ fn check_counts(
     decided
 }
 
+/// A display as a sink on which overdraw is invisible: strokes write
+/// their pieces whole into it, overlapping.
+struct Overlapping<'a>(&'a mut SimDisplay<Gray8>);
+
+impl SpanSink<Gray8> for Overlapping<'_> {
+    type Error = Infallible;
+
+    fn bounds(&self) -> Rectangle {
+        self.0.bounding_box()
+    }
+
+    fn overdraw_is_invisible(&self) -> bool {
+        true
+    }
+
+    fn fill_span(&mut self, span: Span, color: Gray8) -> Result<(), Infallible> {
+        self.0.fill_span(span, color)
+    }
+}
+
+/// `shape` drawn on a display `width` px wide as [`Overlapping`]: lights
+/// the pixels of `masked`, its drawing written each once.
+fn assert_overlapping_lights_the_same(
+    shape: &impl SpanDrawable<Color = Gray8>,
+    masked: &SimDisplay<Gray8>,
+    what: &dyn std::fmt::Debug,
+) {
+    let size = masked.bounding_box().size;
+    let mut d = SimDisplay::new(size.width, size.height, Gray8::BLACK);
+    shape.draw_spans(&mut Overlapping(&mut d)).unwrap();
+    assert_eq!(d.out_of_bounds_writes(), 0, "{what:?}");
+    assert!(
+        d.pixels() == masked.pixels(),
+        "{what:?}: overlapping pieces light other pixels"
+    );
+}
+
 fn draw_polyline(points: &[Point], width: u32, join: Join) -> SimDisplay<Gray8> {
     let mut d = SimDisplay::new(SIZE, SIZE, Gray8::BLACK);
     Polyline::new(points)
@@ -273,6 +316,11 @@ fn assert_polyline(points: &[Point], width: u32, join: Join) {
     let d = draw_polyline(points, width, join);
     let what = (points, width, join);
     check(&d, &Reference::polyline(points, width, join), &what);
+    let stroke = Polyline::new(points)
+        .stroke(Gray8::WHITE)
+        .stroke_width(width)
+        .join(join);
+    assert_overlapping_lights_the_same(&stroke, &d, &what);
 }
 
 fn any_join() -> impl Strategy<Value = Join> {
@@ -355,8 +403,10 @@ proptest! {
     ) {
         let v = [0, 2, 4].map(|k| Vertex::from_raw(raw[k], raw[k + 1]));
         let mut d = SimDisplay::new(SIZE, SIZE, Gray8::BLACK);
-        Triangle::new(v[0], v[1], v[2]).stroke(Gray8::WHITE).stroke_width(width).join(join).draw(&mut d).unwrap();
+        let stroke = Triangle::new(v[0], v[1], v[2]).stroke(Gray8::WHITE).stroke_width(width).join(join);
+        stroke.draw(&mut d).unwrap();
         check(&d, &Reference::ring(&v, width, join), &(v, width, join));
+        assert_overlapping_lights_the_same(&stroke, &d, &(v, width, join));
     }
 
     /// Polygon outlines, self-crossing ones too, every pixel once.
@@ -368,8 +418,11 @@ proptest! {
     ) {
         let v: Vec<Vertex> = raw.iter().map(|&(x, y)| Vertex::from_raw(x, y)).collect();
         let mut d = SimDisplay::new(SIZE, SIZE, Gray8::BLACK);
-        Polygon::<8>::new(&v).unwrap().stroke(Gray8::WHITE).stroke_width(width).join(join).draw(&mut d).unwrap();
+        let polygon = Polygon::<8>::new(&v).unwrap();
+        let stroke = polygon.stroke(Gray8::WHITE).stroke_width(width).join(join);
+        stroke.draw(&mut d).unwrap();
         check(&d, &Reference::ring(&v, width, join), &(&v, width, join));
+        assert_overlapping_lights_the_same(&stroke, &d, &(&v, width, join));
     }
 
     /// Segments from far outside (up to the ends of `i32`) through the
@@ -385,8 +438,7 @@ proptest! {
         let c = |v: i64| v.clamp(i32::MIN.into(), i32::MAX.into()) as i32;
         points.insert(0, Point::new(c(far[0].0), c(far[0].1)));
         points.push(Point::new(c(far[1].0), c(far[1].1)));
-        let d = draw_polyline(&points, width, join);
-        check(&d, &Reference::polyline(&points, width, join), &(&points, width, join));
+        assert_polyline(&points, width, join);
     }
 
     /// A two-point thick polyline is the thick line, pixel for pixel.
@@ -425,7 +477,10 @@ proptest! {
         let moved: Vec<Point> = small.iter().map(|&p| p + shift).collect();
         let small = draw_polyline(&small, width, join);
         let mut wide = SimDisplay::new(8300, SIZE, Gray8::BLACK);
-        Polyline::new(&moved).stroke(Gray8::WHITE).stroke_width(width).join(join).draw(&mut wide).unwrap();
+        let stroke = Polyline::new(&moved).stroke(Gray8::WHITE).stroke_width(width).join(join);
+        stroke.draw(&mut wide).unwrap();
+        // Overlapping, the whole display is one tile.
+        assert_overlapping_lights_the_same(&stroke, &wide, &(&moved, width, join));
         for y in 0..SIZE as i32 {
             for x in 0..SIZE as i32 {
                 let p = Point::new(x, y);

@@ -254,6 +254,12 @@ impl<C: Copy, T: SpanSink<C> + OriginDimensions, const H: usize> SpanSink<C> for
         self.target.bounds()
     }
 
+    /// The target's: a row written twice is marked dirty once.
+    #[inline(always)]
+    fn overdraw_is_invisible(&self) -> bool {
+        self.target.overdraw_is_invisible()
+    }
+
     fn fill_span(&mut self, span: Span, color: C) -> Result<(), Self::Error> {
         self.mark(&span.rect());
         self.target.fill_span(span, color)

@@ -264,6 +264,12 @@ impl<C: Copy, T: SpanSink<C> + OriginDimensions> SpanSink<C> for Band<'_, T> {
         self.area()
     }
 
+    /// The target's.
+    #[inline(always)]
+    fn overdraw_is_invisible(&self) -> bool {
+        self.target.overdraw_is_invisible()
+    }
+
     fn fill_span(&mut self, span: Span, color: C) -> Result<(), Self::Error> {
         self.span_writer(color)(span)
     }

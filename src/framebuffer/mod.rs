@@ -509,6 +509,12 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
         Rectangle::new(Point::zero(), self.size())
     }
 
+    /// `true`: a pixel holds the last colour written to it.
+    #[inline(always)]
+    fn overdraw_is_invisible(&self) -> bool {
+        true
+    }
+
     // Inlined on hosts into the triangle walks' row loop (see
     // `triangle::fill::by_numbers`).
     #[cfg_attr(not(target_arch = "arm"), inline(always))]

@@ -23,15 +23,22 @@
 //! parallelogram and make no joint); a stroke with no length at all is the
 //! `w x w` square around its point.
 //!
-//! # Each pixel once
+//! # Each pixel once, or each piece whole
 //!
 //! The pieces overlap (on the inside of every turn, and wherever the
-//! outline crosses itself), so each pixel they light is written by the
-//! first piece that reaches it and skipped by the others: the stroke's
-//! box inside the clip is cut into tiles of up to 8,192 px across and as
-//! many rows as a mask of one bit a pixel holds in 1 KiB, and in each
-//! tile every piece that can reach it writes the pixels of its own not
-//! yet marked, and marks them. A polygon piece (a segment's
+//! outline crosses itself). Into a sink that needs every pixel written
+//! once (any `DrawTarget`: it may blend, count writes or send each one to
+//! a display), each pixel they light is written by the first piece that
+//! reaches it and skipped by the others: the stroke's box inside the clip
+//! is cut into tiles of up to 8,192 px across and as many rows as a mask
+//! of one bit a pixel holds in 1 KiB, and in each tile every piece that
+//! can reach it writes the pixels of its own not yet marked, and marks
+//! them. Into a sink on which overdraw is invisible
+//! ([`SpanSink::overdraw_is_invisible`]: the framebuffer), the whole box
+//! is one tile and each piece is written whole, with no mask: the same
+//! pixels, the overlaps written twice.
+//!
+//! A polygon piece (a segment's
 //! parallelogram, a bevel or a miter's tip) whose corners are 20.12
 //! vertices is walked by the raster core, as a filled polygon is: two
 //! chains of edges from its top corner to its bottom one, stepped a row
@@ -46,17 +53,19 @@
 //!
 //! # Cost and storage
 //!
-//! No heap and no storage proportional to the number of points: the mask
-//! (1 KiB) and the offsets of up to 64 segments (1 KiB, kept between
-//! tiles, so their square roots are taken once) are on the stack. Each
-//! tile walks the points and builds only the pieces that can reach it,
-//! so a tile costs `O(n)` for `n` points plus each reaching piece's
-//! setup (two divisions an edge) and its rows within the tile; only the
-//! rows and columns of the target within reach of a point are visited.
-//! A tile is as wide as the stroke's box inside the clip (up to 8,192 px)
-//! and as tall as the mask allows: 25 rows for a box 320 px wide, 256 for
-//! one under 33 px.
-//!
+//! No heap and no storage proportional to the number of points: the
+//! offsets of up to 64 segments (1 KiB, kept between tiles, so their
+//! square roots are taken once) and, for a sink that needs each pixel
+//! once, the mask (1 KiB) are on the stack. Each tile walks the points
+//! and builds only the pieces that can reach it, so a tile costs `O(n)`
+//! for `n` points plus each reaching piece's setup (two divisions an
+//! edge) and its rows within the tile; only the rows and columns of the
+//! target within reach of a point are visited. A masked tile is as wide
+//! as the stroke's box inside the clip (up to 8,192 px) and as tall as
+//! the mask allows: 25 rows for a box 320 px wide, 256 for one under
+//! 33 px. Without the mask every piece is set up once, and costs what it
+//! would cost filled on its own.
+
 //! # Ranges
 //!
 //! Any `i32` points (polylines) and any [`Vertex`]es (triangles,
@@ -309,29 +318,46 @@ impl<'a> Stroke<'a> {
         }
     }
 
-    /// Writes the stroke's pixels into `sink`, each once.
+    /// Writes the stroke's pixels into `sink`: each once, unless the sink
+    /// says overdraw is invisible ([`SpanSink::overdraw_is_invisible`]).
     ///
-    /// The stroke's box inside the clip is cut into tiles of at most
-    /// [`MASK_WORDS`] 32-pixel words; in each, every piece that can reach
-    /// it writes the pixels of its own that no piece wrote before,
-    /// marked in the tile's mask. A polygon piece whose corners are 20.12
-    /// vertices is walked by the raster core (two chains of edges,
-    /// stepped a row at a time); a round join's disk sector, or a piece
-    /// out of that range, is found row by row ([`row::interval`]).
+    /// Each piece that can reach the stroke's box inside the clip writes
+    /// its pixels: a polygon piece whose corners are 20.12 vertices walked
+    /// by the raster core (two chains of edges, stepped a row at a time),
+    /// a round join's disk sector, or a piece out of that range, found row
+    /// by row ([`row::interval`]). Written each once, the box is cut into
+    /// tiles of at most [`MASK_WORDS`] 32-pixel words, and in each a
+    /// piece writes only the pixels no piece wrote before, marked in the
+    /// tile's mask; else the whole box is one tile, with no mask, and the
+    /// pieces overlap.
     pub fn draw<C: Copy, S: SpanSink<C>>(&self, color: C, sink: &mut S) -> Result<(), S::Error> {
         let clip = Bounds::of(&sink.bounds());
         let rows = self.reach_of(1, clip.y0, clip.y1);
         let (Some(rows), Some(columns)) = (rows, self.reach_of(0, clip.x0, clip.x1)) else {
             return Ok(());
         };
-        let ends = self.ends();
-        let mut offsets = Offsets::new();
-        let mut mask = Mask::new();
         // A tile from column or row 2^31 on (of a clip that reaches there)
         // holds no pixel a `Point` can name: the tiles end there, and each
         // tile's top-left pixel is a `Point`.
         let columns = columns.start..columns.end.min(1 << 31);
         let rows = rows.start..rows.end.min(1 << 31);
+        let ends = self.ends();
+        let mut offsets = Offsets::new();
+        if sink.overdraw_is_invisible() {
+            if columns.is_empty() || rows.is_empty() {
+                return Ok(());
+            }
+            let (x0, x1, y0, y1) = (columns.start, columns.end, rows.start, rows.end);
+            let tile = Tile {
+                x0,
+                x1,
+                y0,
+                y1,
+                rectangle: Bounds { x0, y0, x1, y1 }.to_rectangle(),
+            };
+            return self.draw_tile(&tile, ends, &mut offsets, &mut whole_runs(sink, color));
+        }
+        let mut mask = Mask::new();
         let mut x0 = columns.start;
         while x0 < columns.end {
             let x1 = columns.end.min(x0 + MASK_BITS);
@@ -346,28 +372,35 @@ impl<'a> Stroke<'a> {
                     x1,
                     y0,
                     y1,
-                    stride,
                     rectangle: Bounds { x0, y0, x1, y1 }.to_rectangle(),
                 };
-                mask.clear(&tile);
-                let window = Window::of(&tile);
-                let origin = tile.rectangle.top_left;
-                let mut result = Ok(());
-                self.for_each_piece(&window, ends, &mut offsets, &mut |piece: &Piece| {
-                    if result.is_ok() {
-                        result = piece_spans(piece, &tile, &mut |row, c, end| {
-                            mask.write_unset(&tile, row, c, end, |s, e| {
-                                emit(sink, origin, row, s, e, color)
-                            })
-                        });
-                    }
-                });
-                result?;
+                mask.clear(stride, usize::try_from(y1 - y0).unwrap_or(MASK_WORDS));
+                let mut write = masked_runs(&mut mask, tile.rectangle.top_left, sink, color);
+                self.draw_tile(&tile, ends, &mut offsets, &mut write)?;
                 y0 = y1;
             }
             x0 = x1;
         }
         Ok(())
+    }
+
+    /// Calls `write` with each run of `tile` pixels the pieces light.
+    #[inline(always)]
+    fn draw_tile<E>(
+        &self,
+        tile: &Tile,
+        ends: Option<(usize, usize)>,
+        offsets: &mut Offsets,
+        write: &mut impl FnMut(i32, i32, u32) -> Result<(), E>,
+    ) -> Result<(), E> {
+        let window = Window::of(tile);
+        let mut result = Ok(());
+        self.for_each_piece(&window, ends, offsets, &mut |piece: &Piece| {
+            if result.is_ok() {
+                result = piece_spans(piece, tile, write);
+            }
+        });
+        result
     }
 
     /// The first and last segments with length; `None` if there are none.
@@ -533,30 +566,19 @@ impl Offsets {
     }
 }
 
-/// Calls `emit` with the row and the columns `c..end` of each run of
-/// `tile` pixels `piece` lights, counted from the tile's top-left pixel:
-/// a polygon of 20.12 corners walked by the raster core
-/// ([`monotone_spans`]: a convex piece is y-monotone), anything else row
-/// by row through [`row::interval`].
+/// Calls `emit` with the row, the first column and the length of each
+/// run of `tile` pixels `piece` lights (a run may end at column `2^31`,
+/// past what a `Span` holds): a polygon of 20.12 corners walked by the
+/// raster core ([`monotone_spans`]: a convex piece is y-monotone),
+/// anything else row by row through [`row::interval`].
 fn piece_spans<E>(
     piece: &Piece,
     tile: &Tile,
-    emit: &mut impl FnMut(usize, usize, usize) -> Result<(), E>,
+    emit: &mut impl FnMut(i32, i32, u32) -> Result<(), E>,
 ) -> Result<(), E> {
-    // Offsets into the tile, in 32 bits: a span of the walk lies inside
-    // the tile's rectangle, at most 8,192 px from its top-left pixel, so
-    // the differences do not overflow and are not negative.
-    let origin = tile.rectangle.top_left;
-    let from = |v: i32, o: i32| (v - o) as u32 as usize;
     if let Some(vertices) = piece.vertices() {
-        // Convex: no y-monotone test.
-        let walked = monotone_spans(vertices, Shape::Convex, &tile.rectangle, &mut |s: Span| {
-            emit(
-                from(s.y, origin.y),
-                from(s.x_start, origin.x),
-                from(s.x_end, origin.x),
-            )
-        });
+        // Convex: no y-monotone test. The walk's spans are not reversed.
+        let walked = monotone_spans(vertices, Shape::Convex, &tile.rectangle, &mut as_runs(emit));
         if let Some(result) = walked {
             return result;
         }
@@ -565,40 +587,86 @@ fn piece_spans<E>(
     let (lo, hi) = piece.ys;
     let first = (lo.saturating_sub(2048) / 4096 - 1).max(tile.y0);
     let end = (hi.saturating_sub(2048) / 4096 + 2).min(tile.y1);
-    let inside = |v: i64, o: i64| usize::try_from(v - o).unwrap_or(usize::MAX);
     for j in first..end {
         // |j| < 2^32: the sample fits i64.
         if let Some((a, b)) = row::interval(piece, j * 4096 + 2048) {
             let (a, b) = (a.clamp(tile.x0, tile.x1), b.clamp(tile.x0, tile.x1));
-            if a < b {
-                emit(inside(j, tile.y0), inside(a, tile.x0), inside(b, tile.x0))?;
+            // The tile's rows and columns before its far sides are
+            // `Point` coordinates, and its sides fit `u32`.
+            let run = (i32::try_from(j), i32::try_from(a), u32::try_from(b - a));
+            if let (Ok(y), Ok(x), Ok(len @ 1..)) = run {
+                emit(y, x, len)?;
             }
         }
     }
     Ok(())
 }
 
-/// Writes the pixels `s..e` of row `row` of the tile whose top-left pixel
-/// is `origin` (inside the sink's bounds).
+/// `emit` taking a walk's spans, as runs. Always inlined, and so is its
+/// closure: called once a span from the walk's row loop, it cost ... a span.
 #[inline(always)]
-fn emit<C: Copy, S: SpanSink<C>>(
-    sink: &mut S,
+fn as_runs<E>(
+    emit: &mut impl FnMut(i32, i32, u32) -> Result<(), E>,
+) -> impl FnMut(Span) -> Result<(), E> + '_ {
+    #[inline(always)]
+    move |s: Span| emit(s.y, s.x_start, s.x_end.abs_diff(s.x_start))
+}
+
+/// Writes runs into `sink` whole, as [`write_run`]. Always inlined, as
+/// is its closure (see [`as_runs`]).
+#[inline(always)]
+fn whole_runs<'a, C: Copy + 'a, S: SpanSink<C>>(
+    sink: &'a mut S,
+    color: C,
+) -> impl FnMut(i32, i32, u32) -> Result<(), S::Error> + 'a {
+    #[inline(always)]
+    move |y, x, len| write_run(sink, y, x, len, color)
+}
+
+/// Writes the pixels of runs not written yet in the tile whose top-left
+/// pixel is `origin`, as marked in its `mask`, and marks them. Always
+/// inlined, as is its closure (see [`as_runs`]).
+#[inline(always)]
+fn masked_runs<'a, C: Copy + 'a, S: SpanSink<C>>(
+    mask: &'a mut Mask,
     origin: Point,
-    row: usize,
-    s: usize,
-    e: usize,
+    sink: &'a mut S,
+    color: C,
+) -> impl FnMut(i32, i32, u32) -> Result<(), S::Error> + 'a {
+    #[inline(always)]
+    move |y, x, len| {
+        // The mask counts from the tile's top-left pixel, in its own
+        // columns and rows (under 2^13, see `Mask::write_unset`); the run
+        // lies inside the tile: the differences do not overflow and are
+        // not negative.
+        let (row, c) = ((y - origin.y) as usize, (x - origin.x) as usize);
+        mask.write_unset(row, c, c + len as usize, |s, e| {
+            // `s..e` lies within `c..c + len`, inside the tile.
+            write_run(sink, y, origin.x + s as i32, (e - s) as u32, color)
+        })
+    }
+}
+
+/// Writes the `len` pixels from `(x, y)` on (inside the sink's bounds):
+/// one span, or a rectangle for a run ending past `i32::MAX`, which a
+/// `Span` cannot hold.
+#[inline(always)]
+fn write_run<C: Copy, S: SpanSink<C>>(
+    sink: &mut S,
+    y: i32,
+    x: i32,
+    len: u32,
     color: C,
 ) -> Result<(), S::Error> {
-    // Offsets within a tile, under 2^13 columns and rows (the casts are
-    // exact), whose pixels lie before column and row 2^31: no overflow.
-    let (x_start, y) = (origin.x + s as i32, origin.y + row as i32);
-    let len = e.saturating_sub(s) as u32;
-    match x_start.checked_add_unsigned(len) {
-        Some(x_end) => sink.fill_span(Span { y, x_start, x_end }, color),
-        // A span ending past i32::MAX, which a `Span` cannot hold.
-        None => sink.fill_rect(
-            &Rectangle::new(Point::new(x_start, y), Size::new(len, 1)),
+    match x.checked_add_unsigned(len) {
+        Some(x_end) => sink.fill_span(
+            Span {
+                y,
+                x_start: x,
+                x_end,
+            },
             color,
         ),
+        None => sink.fill_rect(&Rectangle::new(Point::new(x, y), Size::new(len, 1)), color),
     }
 }

@@ -102,59 +102,64 @@ pub(crate) const MASK_WORDS: usize = 256;
 /// The widest tile, in pixels.
 pub(crate) const MASK_BITS: i64 = 32 * MASK_WORDS as i64;
 
-/// A rectangle of pixels `x0..x1` by `y0..y1` whose mask rows are
-/// `stride` words apart (`stride (y1 - y0) <= MASK_WORDS`, `x1 - x0 <=
-/// 32 stride`), its top-left pixel a `Point` (`x0` and `y0` fit `i32`).
+/// A rectangle of pixels `x0..x1` by `y0..y1` a stroke's pieces are
+/// walked in: a tile of the masked walk (at most [`MASK_BITS`] wide), or
+/// the stroke's whole reach inside the clip when overdraw is invisible.
+/// Its top-left pixel is a `Point` (`x0` and `y0` fit `i32`) and its
+/// sides fit `u32` (it lies inside a `Rectangle`).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Tile {
     pub x0: i64,
     pub x1: i64,
     pub y0: i64,
     pub y1: i64,
-    pub stride: usize,
     /// The same pixels, for the walk's clip: its top-left corner is
-    /// `(x0, y0)`, from which the mask's rows and columns count.
+    /// `(x0, y0)`, from which the pieces' rows and columns count.
     pub rectangle: Rectangle,
 }
 
-/// The pixels of a tile already written, a bit each.
+/// The pixels of a tile already written, a bit each, its rows `stride`
+/// words apart.
 #[derive(Debug)]
 pub(crate) struct Mask {
     words: [u32; MASK_WORDS],
+    stride: usize,
 }
 
 impl Mask {
     pub fn new() -> Self {
         Self {
             words: [0; MASK_WORDS],
+            stride: 0,
         }
     }
 
-    /// Marks every pixel of `tile` unwritten.
-    pub fn clear(&mut self, tile: &Tile) {
-        let rows = usize::try_from(tile.y1 - tile.y0).unwrap_or(MASK_WORDS);
-        let used = tile.stride.saturating_mul(rows);
+    /// Starts a tile of `rows` rows `stride` words apart (`stride rows <=
+    /// MASK_WORDS`, the tile at most `32 stride` px wide), every pixel
+    /// unwritten.
+    pub fn clear(&mut self, stride: usize, rows: usize) {
+        self.stride = stride;
+        let used = stride.saturating_mul(rows);
         if let Some(words) = self.words.get_mut(..used) {
             words.fill(0);
         }
     }
 
     /// Calls `write` with each run of columns of `c..end` in row `row` of
-    /// `tile` (counted from its top-left pixel, all inside it) not written
-    /// yet, left to right, and marks them written.
+    /// the tile (counted from its top-left pixel, all inside it) not
+    /// written yet, left to right, and marks them written.
     ///
     /// The tile's own columns and rows, in `usize`: on a 32-bit core this
     /// is the stroke's inner loop, and the absolute coordinates were
     /// 64-bit arithmetic there.
     pub fn write_unset<E>(
         &mut self,
-        tile: &Tile,
         row: usize,
         mut c: usize,
         end: usize,
         mut write: impl FnMut(usize, usize) -> Result<(), E>,
     ) -> Result<(), E> {
-        let stride = tile.stride;
+        let stride = self.stride;
         // Inside the tile: its rows' words lie within the mask, and its
         // columns within a row's words.
         debug_assert!((row + 1) * stride <= MASK_WORDS && end <= 32 * stride);
@@ -220,18 +225,10 @@ mod tests {
     /// each pixel written once and exactly the runs' union written.
     #[test]
     fn masked_runs_write_each_pixel_once() {
-        let tile = Tile {
-            x0: -40,
-            x1: 50,
-            y0: 7,
-            y1: 9,
-            stride: 3,
-            rectangle: Rectangle::zero(),
-        };
         let mut random = crate::raster::xorshift(0x9E37_79B9_7F4A_7C15);
         for _ in 0..200 {
             let mut mask = Mask::new();
-            mask.clear(&tile);
+            mask.clear(3, 2);
             let mut written = [[0u8; 90]; 2];
             let mut want = [[false; 90]; 2];
             for _ in 0..12 {
@@ -241,7 +238,7 @@ mod tests {
                 let (a, b) = (a.min(b), a.max(b));
                 want[row][a..b].fill(true);
                 let mut last = None;
-                mask.write_unset(&tile, row, a, b, |s, e| {
+                mask.write_unset(row, a, b, |s, e| {
                     assert!(
                         a <= s && s < e && e <= b && last.is_none_or(|l| s > l),
                         "{s}..{e} in {a}..{b}"
