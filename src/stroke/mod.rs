@@ -118,6 +118,10 @@ use row::{Mask, Tile, MASK_BITS, MASK_WORDS};
 /// stroke crosses itself, so a mask of the pixels already written (1 KiB,
 /// for a tile of the target at a time) lets each piece write only the
 /// pixels no piece wrote before: every lit pixel is written exactly once.
+/// A sink on which overdraw is invisible
+/// ([`SpanSink::overdraw_is_invisible`](crate::SpanSink::overdraw_is_invisible):
+/// the crate's `Framebuffer`, through `draw_spans`) takes each piece
+/// whole instead, the overlaps twice: the same pixels, with no mask.
 /// The polygon pieces are walked by the same exact edges as filled
 /// polygons; a round join's disk is found row by row, with an integer
 /// square root. Neighbouring pieces share their corner points exactly
@@ -128,21 +132,22 @@ use row::{Mask, Tile, MASK_BITS, MASK_WORDS};
 /// # Cost and storage
 ///
 /// No heap, no storage proportional to the number of points (about 2 KiB
-/// of stack: the mask and the offsets of up to 64 segments). A tile (25
-/// rows of a stroke 320 px wide) walks the points and builds only the
-/// pieces within reach of it; only the target's rows and columns within
-/// reach of a point are visited.
+/// of stack: the mask and the offsets of up to 64 segments; 1 KiB with no
+/// mask). A masked tile (25 rows of a stroke 320 px wide) walks the
+/// points and builds only the pieces within reach of it; only the
+/// target's rows and columns within reach of a point are visited.
 ///
 /// Measured on the host, 8 px wide on a 320 x 240 framebuffer (`cargo
 /// bench --bench lines -- "thick polyline"`, one run on the build machine
-/// of 2026-12-05): a 21-point zigzag takes 46 µs and a noisy 320-point
-/// trace (each row crossed by about a hundred segments) 0.45 ms. That is
-/// 3.4 and 4.2 times as long as the same segments drawn as separate thick
-/// lines, which overlap and leave notches, and 24 and 28 times faster
-/// than embedded-graphics 0.8's `Polyline` with the same stroke (1.1 ms
-/// and 12.5 ms), in the same run. On a Cortex-M4 (`.ci/itrace`) the
-/// zigzag takes 1.09 million instructions, its separate thick lines 0.30
-/// million.
+/// of 2026-12-05), mitred: a 21-point zigzag takes 15 µs through
+/// `draw_spans` (no mask) and 46 µs through `draw` (each pixel once), a
+/// noisy 320-point trace (each row crossed by about a hundred segments)
+/// 0.14 ms and 0.44 ms. The same segments drawn as separate thick lines,
+/// which overlap and leave notches, take 15 µs and 0.11 ms, and
+/// embedded-graphics 0.8's `Polyline` with the same stroke 1.1 ms and
+/// 12.1 ms, in the same run. On a Cortex-M4 (`.ci/itrace`) the zigzag
+/// takes 0.43 million instructions through `draw_spans` and 1.14 million
+/// through `draw`, its separate thick lines 0.30 million.
 ///
 /// # Ranges
 ///
