@@ -142,33 +142,25 @@ fn thick_polylines(c: &mut Criterion) {
     let mut fb = Box::new(Fb::new());
     for (name, points) in polylines() {
         let mut g = c.benchmark_group(format!("thick polyline {name}"));
-        for (id, join) in [("miter", Join::Miter), ("round", Join::Round)] {
-            g.bench_function(id, |b| {
-                b.iter(|| {
-                    Polyline::new(&points)
-                        .stroke(Rgb565::RED)
-                        .stroke_width(WIDTH)
-                        .join(join)
-                        .draw(&mut *fb)
-                        .unwrap();
-                    black_box(&fb);
-                })
-            });
-        }
-        // The framebuffer's own span sink: overdraw is invisible there,
-        // so the pieces are written whole, with no mask.
-        for (id, join) in [
-            ("miter, draw_spans", Join::Miter),
-            ("round, draw_spans", Join::Round),
+        // Through `draw` (the `DrawTarget` path: each pixel once, masked)
+        // and the framebuffer's own span sink (overdraw is invisible
+        // there, so the pieces are written whole, with no mask).
+        for (id, join, spans) in [
+            ("miter", Join::Miter, false),
+            ("round", Join::Round, false),
+            ("miter, draw_spans", Join::Miter, true),
+            ("round, draw_spans", Join::Round, true),
         ] {
             g.bench_function(id, |b| {
                 b.iter(|| {
-                    Polyline::new(&points)
+                    let stroke = Polyline::new(&points)
                         .stroke(Rgb565::RED)
                         .stroke_width(WIDTH)
-                        .join(join)
-                        .draw_spans(&mut *fb)
-                        .unwrap();
+                        .join(join);
+                    match spans {
+                        true => stroke.draw_spans(&mut *fb).unwrap(),
+                        false => stroke.draw(&mut *fb).unwrap(),
+                    }
                     black_box(&fb);
                 })
             });

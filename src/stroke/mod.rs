@@ -352,14 +352,7 @@ impl<'a> Stroke<'a> {
             if columns.is_empty() || rows.is_empty() {
                 return Ok(());
             }
-            let (x0, x1, y0, y1) = (columns.start, columns.end, rows.start, rows.end);
-            let tile = Tile {
-                x0,
-                x1,
-                y0,
-                y1,
-                rectangle: Bounds { x0, y0, x1, y1 }.to_rectangle(),
-            };
+            let tile = Tile::new(columns.start, columns.end, rows.start, rows.end);
             return self.draw_tile(&tile, ends, &mut offsets, &mut whole_runs(sink, color));
         }
         let mut mask = Mask::new();
@@ -372,13 +365,7 @@ impl<'a> Stroke<'a> {
             let mut y0 = rows.start;
             while y0 < rows.end {
                 let y1 = rows.end.min(y0 + tall);
-                let tile = Tile {
-                    x0,
-                    x1,
-                    y0,
-                    y1,
-                    rectangle: Bounds { x0, y0, x1, y1 }.to_rectangle(),
-                };
+                let tile = Tile::new(x0, x1, y0, y1);
                 mask.clear(stride, usize::try_from(y1 - y0).unwrap_or(MASK_WORDS));
                 let mut write = masked_runs(&mut mask, tile.rectangle.top_left, sink, color);
                 self.draw_tile(&tile, ends, &mut offsets, &mut write)?;

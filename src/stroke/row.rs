@@ -14,7 +14,7 @@
 use embedded_graphics_core::primitives::Rectangle;
 
 use super::pieces::Piece;
-use crate::raster::edge::threshold_on_row;
+use crate::{clip::Bounds, raster::edge::threshold_on_row};
 
 /// Raw units per pixel, and half of it (a pixel centre's offset).
 const ONE: i64 = 4096;
@@ -116,6 +116,20 @@ pub(crate) struct Tile {
     /// The same pixels, for the walk's clip: its top-left corner is
     /// `(x0, y0)`, from which the pieces' rows and columns count.
     pub rectangle: Rectangle,
+}
+
+impl Tile {
+    /// The pixels `x0..x1` by `y0..y1` (inside a `Rectangle`, see
+    /// [`Tile`]).
+    pub fn new(x0: i64, x1: i64, y0: i64, y1: i64) -> Self {
+        Self {
+            x0,
+            x1,
+            y0,
+            y1,
+            rectangle: Bounds { x0, y0, x1, y1 }.to_rectangle(),
+        }
+    }
 }
 
 /// The pixels of a tile already written, a bit each, its rows `stride`
