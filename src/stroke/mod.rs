@@ -65,7 +65,7 @@
 //! the mask allows: 25 rows for a box 320 px wide, 256 for one under
 //! 33 px. Without the mask every piece is set up once, and costs what it
 //! would cost filled on its own.
-
+//!
 //! # Ranges
 //!
 //! Any `i32` points (polylines) and any [`Vertex`]es (triangles,
@@ -595,7 +595,10 @@ fn piece_spans<E>(
 }
 
 /// `emit` taking a walk's spans, as runs. Always inlined, and so is its
-/// closure: called once a span from the walk's row loop, it cost ... a span.
+/// closure: left to the compiler, the walk's row loop called it once a
+/// span, and `.ci/itrace`'s zigzag through `draw_spans` took 490,735
+/// instructions on a Cortex-M4, 443,956 with it (and the writer behind
+/// it) inlined.
 #[inline(always)]
 fn as_runs<E>(
     emit: &mut impl FnMut(i32, i32, u32) -> Result<(), E>,
