@@ -51,7 +51,9 @@
 //! A thick [`Polyline`] is one stroke: its segments' rectangles (the same
 //! corners) joined by a [`Join`](crate::Join) (miter by default, bevel
 //! past [`MITER_LIMIT`](crate::MITER_LIMIT), or round), filled as one
-//! union, so each pixel is written once and no joint has a gap. A
+//! union, so each pixel is written once (into a sink on which overdraw is
+//! invisible, such as the framebuffer through `draw_spans`, the pieces are
+//! written whole instead, their overlaps twice) and no joint has a gap. A
 //! two-point thick polyline is the thick line (within the 20.12 range).
 
 mod bresenham;

@@ -191,8 +191,9 @@ impl<'a, C> StyledPolyline<'a, C> {
     ///
     /// Any `u32`: 0 draws nothing; 1 is the 1-pixel polyline; 2 and more is
     /// a thick stroke that wide, its segments meeting in [`join`](Self::join)s
-    /// and each pixel written once (see [`Polyline`]), widths over 65535
-    /// drawn as 65535.
+    /// and each pixel written once (see [`Polyline`]; see
+    /// [`Join`](crate::Join) for sinks on which overdraw is invisible),
+    /// widths over 65535 drawn as 65535.
     ///
     /// # Examples
     ///
@@ -305,8 +306,9 @@ impl<C> StyledPolylineVariant<'_, C> {
     ///
     /// Any `u32`: 0 draws nothing; 1 is the 1-pixel polyline; 2 and more is
     /// a thick stroke that wide, its segments meeting in [`join`](Self::join)s
-    /// and each pixel written once (see [`Polyline`]), widths over 65535
-    /// drawn as 65535.
+    /// and each pixel written once (see [`Polyline`]; see
+    /// [`Join`](crate::Join) for sinks on which overdraw is invisible),
+    /// widths over 65535 drawn as 65535.
     ///
     /// # Examples
     ///

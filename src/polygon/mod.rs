@@ -471,7 +471,9 @@ impl<C: PixelColor, const N: usize> SpanDrawable for FilledPolygon<'_, C, N> {
 /// `width` px wide, corners filled by the [`Join`], every pixel written
 /// exactly once under the crate's sampling rule, where the outline
 /// crosses itself too (the same code as a thick
-/// [`Polyline`](crate::Polyline)). Repeated vertices are skipped. It needs
+/// [`Polyline`](crate::Polyline); into a sink on which overdraw is
+/// invisible, such as the framebuffer through `draw_spans`, the pieces
+/// are written whole and their overlaps twice). Repeated vertices are skipped. It needs
 /// no storage, whatever `N`. Width 0 draws nothing, widths over 65535 draw
 /// as 65535.
 ///

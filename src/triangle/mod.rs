@@ -338,7 +338,9 @@ impl<C: PixelColor> SpanDrawable for FilledTriangle<C> {
 /// (subpixel positions, not pixel centres): a band `width` px wide centred
 /// on each edge, the corners filled by the [`Join`], every pixel of it
 /// written exactly once under the crate's sampling rule (the same code as
-/// a thick [`Polyline`](crate::Polyline), see there). Width 0 draws
+/// a thick [`Polyline`](crate::Polyline), see there; into a sink on which
+/// overdraw is invisible, such as the framebuffer through `draw_spans`,
+/// the pieces are written whole and their overlaps twice). Width 0 draws
 /// nothing, widths over 65535 draw as 65535; a triangle with all three
 /// vertices equal is the `width x width` square around them.
 ///
