@@ -453,6 +453,8 @@ proptest! {
         let mut l = SimDisplay::new(SIZE, SIZE, Gray8::BLACK);
         Line::new(points[0], points[1]).stroke(Gray8::WHITE).stroke_width(width).draw(&mut l).unwrap();
         prop_assert_eq!(d.pixels(), l.pixels());
+        let stroke = Polyline::new(&points).stroke(Gray8::WHITE).stroke_width(width).join(join);
+        assert_overlapping_lights_the_same(&stroke, &d, &(points, width, join));
     }
 }
 
@@ -726,10 +728,48 @@ impl DrawTarget for FarTarget {
     }
 }
 
+/// [`FarTarget`]'s box as a sink on which overdraw is invisible,
+/// recording the pixels lit (as `i64` columns).
+struct FarOverlapping {
+    bounds: Rectangle,
+    lit: std::collections::HashSet<(i64, i64)>,
+}
+
+impl SpanSink<Gray8> for FarOverlapping {
+    type Error = Infallible;
+
+    fn bounds(&self) -> Rectangle {
+        self.bounds
+    }
+
+    fn overdraw_is_invisible(&self) -> bool {
+        true
+    }
+
+    fn fill_span(&mut self, span: Span, _: Gray8) -> Result<(), Infallible> {
+        let y = i64::from(span.y);
+        self.lit
+            .extend((i64::from(span.x_start)..i64::from(span.x_end)).map(|x| (x, y)));
+        Ok(())
+    }
+
+    /// A run ending at column 2^31 comes as a rectangle: its last pixel
+    /// is column `i32::MAX`, past what a `Span` holds.
+    fn fill_rect(&mut self, area: &Rectangle, _: Gray8) -> Result<(), Infallible> {
+        let (x, y) = (i64::from(area.top_left.x), i64::from(area.top_left.y));
+        for row in y..y + i64::from(area.size.height) {
+            self.lit
+                .extend((x..x + i64::from(area.size.width)).map(|c| (c, row)));
+        }
+        Ok(())
+    }
+}
+
 /// At the right end of the coordinate space, on a target whose box
 /// reaches past it: every pixel a `Point` can name is lit as the
 /// reference says and written once; none past column `i32::MAX` (no
-/// `Point` names one) is written.
+/// `Point` names one) is written. Drawn overlapping, with no mask, the
+/// same pixels are lit.
 #[test]
 fn strokes_at_the_last_column() {
     let m = i32::MAX;
@@ -765,6 +805,21 @@ fn strokes_at_the_last_column() {
         assert!(
             target.writes.contains_key(&(i64::from(m), 1005)),
             "{join:?}"
+        );
+        let mut overlapping = FarOverlapping {
+            bounds: target.bounds,
+            lit: Default::default(),
+        };
+        Polyline::new(&points)
+            .stroke(Gray8::WHITE)
+            .stroke_width(7)
+            .join(join)
+            .draw_spans(&mut overlapping)
+            .unwrap();
+        let masked: std::collections::HashSet<_> = target.writes.keys().copied().collect();
+        assert!(
+            overlapping.lit == masked,
+            "{join:?}: overlapping pieces light other pixels"
         );
     }
 }
