@@ -788,12 +788,11 @@ fn strokes_at_the_last_column() {
             ),
             writes: Default::default(),
         };
-        Polyline::new(&points)
+        let stroke = Polyline::new(&points)
             .stroke(Gray8::WHITE)
             .stroke_width(7)
-            .join(join)
-            .draw(&mut target)
-            .unwrap();
+            .join(join);
+        stroke.draw(&mut target).unwrap();
         assert!(
             target.writes.keys().all(|&(x, _)| x <= i64::from(m)),
             "{join:?}"
@@ -810,12 +809,7 @@ fn strokes_at_the_last_column() {
             bounds: target.bounds,
             lit: Default::default(),
         };
-        Polyline::new(&points)
-            .stroke(Gray8::WHITE)
-            .stroke_width(7)
-            .join(join)
-            .draw_spans(&mut overlapping)
-            .unwrap();
+        stroke.draw_spans(&mut overlapping).unwrap();
         let masked: std::collections::HashSet<_> = target.writes.keys().copied().collect();
         assert!(
             overlapping.lit == masked,
