@@ -22,6 +22,12 @@ fn main() {
     {
         println!("cargo:rustc-cfg=unaligned_words");
     }
+    // `software_division`: the target's cores have no divide instruction
+    // (ARMv6-M), so a division is a library call.
+    println!("cargo::rustc-check-cfg=cfg(software_division)");
+    if target.starts_with("thumbv6m-") {
+        println!("cargo:rustc-cfg=software_division");
+    }
     let arm = env::var("CARGO_CFG_TARGET_ARCH").as_deref() == Ok("arm");
     let firmware = env::var_os("CARGO_FEATURE_FIRMWARE").is_some();
     // `firmware-32k`: the band firmware's map, 32 KiB of RAM in all.
