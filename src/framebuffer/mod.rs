@@ -629,12 +629,8 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
             usize::try_from(top.y),
             usize::try_from(len),
         ) {
-            // From row `y < H` on: `y * STRIDE < N`, no overflow.
-            let below = match y < H {
-                true => self.data.0.get_mut(y * Self::STRIDE..).unwrap_or_default(),
-                false => Default::default(),
-            };
-            for row in rows_of(below, Self::STRIDE).take(len) {
+            let rows = self.data.0.chunks_exact_mut(Self::STRIDE.max(1));
+            for row in rows.skip(y).take(len) {
                 F::write_pixel(row, x, color);
             }
         }
