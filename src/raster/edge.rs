@@ -140,7 +140,19 @@ impl Edge<i32> {
     /// Then every product fits `i32` and nothing is checked: `|4096 dx| <
     /// 2^31` and `e0 |dx| <= 4095 (2^19 - 1) < 2^31`, and with no row
     /// skipped (`n = 0`) the crossing is `x0 + ceil(e0 dx / dy)`. Two
-    /// divisions, one hardware instruction each on a Cortex-M.
+    /// divisions, one hardware instruction each on a Cortex-M3 or later.
+    ///
+    /// ARMv6-M has no divide instruction: a division is a library call of
+    /// about 160 instructions there, and an edge that crosses a single
+    /// row, never stepped, skips the step's (`q` and `r` are then 0).
+    /// `.ci/icount --target thumbv6m-none-eabi`: 4 px triangles 1,856 →
+    /// 1,691 instructions, the built-in scene 1,012,516 → 991,953, 16 px
+    /// triangles 3,094 → 3,109. Where the division is one instruction the
+    /// test costs more than it saves (Cortex-M4, `.ci/icount`: setup
+    /// 268 → 270, 16 px triangles 1,247 → 1,255), and the hosts divide
+    /// both times too (x86-64: level, measured on 2026-12-05). `.ci/run`
+    /// runs the exactness tests with this path on the host as well
+    /// (`--cfg software_division`).
     ///
     /// Inlined on 32-bit ARM too, unlike [`new`](Self::new): on a
     /// Cortex-M4 (`.ci/icount`) it saves 26 of a triangle's setup
@@ -158,7 +170,12 @@ impl Edge<i32> {
             return None;
         }
         let e0 = first * ONE - top.1;
-        let (q, r) = (dx * ONE).div_rem_floor(dy)?;
+        // Where a division is a library call (`software_division`), an
+        // edge of one row skips the step's (see the doc above).
+        let (q, r) = match !cfg!(software_division) || first < last {
+            true => (dx * ONE).div_rem_floor(dy)?,
+            false => (0, 0),
+        };
         let (f, s) = (-(e0 * dx)).div_rem_floor(dy)?;
         Some(Self {
             first_row: first,
