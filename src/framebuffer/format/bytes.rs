@@ -49,9 +49,28 @@ fn walk_line_as<const B: usize>(
 /// with them (`unaligned_words`) already store a `[u8; 2]` as one `strh`,
 /// and their line walk took more instructions through the view
 /// (Cortex-M4: those lines 34,719 → 39,663).
+///
+/// RISC-V and the other cores that are not hosts and have no
+/// `unaligned_words` take the view too, as ARMv6-M does: their compilers
+/// store a `[u8; 2]` byte by byte as well (RISC-V, `riscv32imc`: two `sb`).
 #[inline(always)]
 const fn halfword_cells() -> bool {
-    cfg!(target_arch = "arm") && !cfg!(unaligned_words)
+    !hosts_blocks() && !cfg!(unaligned_words)
+}
+
+/// Whether the target is a host whose cores store 16 unaligned bytes at
+/// once (x86, x86-64, AArch64): spans are then filled with overlapping
+/// 16-byte blocks ([`fill_overlapping`]). Elsewhere such a block is a
+/// `memcpy` call or a store per byte: on RISC-V (`riscv32imc`, opt-level
+/// "s") a 2-byte-pixel span made up to seven `memcpy` calls through the
+/// blocks, and now stores aligned halfwords and words, as ARMv6-M does.
+#[inline(always)]
+const fn hosts_blocks() -> bool {
+    cfg!(any(
+        target_arch = "x86",
+        target_arch = "x86_64",
+        target_arch = "aarch64"
+    ))
 }
 
 /// [`walk_line`] over `cells`, one per pixel, `row` cells a row.
@@ -253,21 +272,22 @@ fn by_memset<const B: usize>(pixel: [u8; B]) -> bool {
 
 /// Fills `bytes`, whole pixels, with copies of `pixel`.
 ///
-/// On hosts, pixels of 2, 4 or 8 bytes as overlapping 16-byte blocks
-/// ([`fill_overlapping`]: no pixel-by-pixel tail, measured faster on
-/// x86-64 on spans of a few pixels to a few dozen), whatever the colour.
-/// Otherwise, one `memset` if [`by_memset`], else:
+/// On hosts ([`hosts_blocks`]), pixels of 2, 4 or 8 bytes as overlapping
+/// 16-byte blocks ([`fill_overlapping`]: no pixel-by-pixel tail, measured
+/// faster on x86-64 on spans of a few pixels to a few dozen), whatever
+/// the colour. Otherwise, one `memset` if [`by_memset`], else:
 ///
 /// - on a core that stores unaligned words (`unaligned_words`), for
 ///   pixels whose size divides 4, a few overlapping words, around aligned
 ///   runs of `strd` on long spans ([`fill_unaligned_words`]);
-/// - on other 32-bit ARM cores and for spans of 16 pixels or more, aligned
-///   32-bit words of the repeating pattern ([`fill_words`]), which the
-///   compiler turns into runs of `strd` on a Cortex-M4; shorter spans
-///   there are a plain pixel loop (the aligned word setup costs more than
-///   it saves);
-/// - on other architectures, the pixel loop, which the compiler
-///   vectorizes.
+/// - on other cores (ARMv6-M, RISC-V, ...) and for spans of 16 pixels or
+///   more, aligned 32-bit words of the repeating pattern ([`fill_words`]),
+///   which the compiler turns into runs of `strd` on a Cortex-M4; shorter
+///   spans there are a plain pixel loop (the aligned word setup costs
+///   more than it saves), 2-byte pixels as halfwords
+///   ([`halfword_cells`]);
+/// - on hosts, pixels of other sizes by the pixel loop, which the
+///   compiler vectorizes.
 ///
 /// Hosts once sent a colour of equal bytes to `memset` before the blocks:
 /// that test, made for every span, took 3 instructions a row on x86-64
@@ -280,13 +300,13 @@ fn by_memset<const B: usize>(pixel: [u8; B]) -> bool {
 #[inline(always)]
 fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     let Some(&first) = pixel.first() else { return };
-    if !cfg!(target_arch = "arm") && 8 % B == 0 && B > 1 {
+    if hosts_blocks() && 8 % B == 0 && B > 1 {
         fill_overlapping(bytes, pixel);
     } else if by_memset(pixel) {
         bytes.fill(first);
     } else if cfg!(unaligned_words) && 4 % B == 0 {
         fill_unaligned_words(bytes, pixel);
-    } else if bytes.len() < 16 * B || !cfg!(target_arch = "arm") {
+    } else if bytes.len() < 16 * B || hosts_blocks() {
         // Whole pixels only: `bytes` is a span of them. Hosts vectorize
         // this loop themselves, better than the word path below.
         fill_pixels(bytes, pixel);
@@ -533,7 +553,7 @@ fn fill_rows_bytes<'a, const B: usize>(
     let (Some(lo), Some(hi)) = (xs.start.checked_mul(B), xs.end.checked_mul(B)) else {
         return;
     };
-    if !cfg!(target_arch = "arm") || by_memset(pixel) || xs.len() < 16 || 4 % B != 0 {
+    if hosts_blocks() || by_memset(pixel) || xs.len() < 16 || 4 % B != 0 {
         for row in rows {
             if let Some(bytes) = row.get_mut(lo..hi) {
                 fill_bytes(bytes, pixel);
