@@ -1,7 +1,9 @@
 //! Firmware: instruction counts per primitive on the Cortex-M4, printed
 //! over semihosting as tab-separated rows; `.ci/icount` runs it (twice,
 //! to check the numbers repeat) and turns them into the Markdown table in
-//! `BENCHMARKS.md`.
+//! `BENCHMARKS.md`. Built for `thumbv6m-none-eabi` (`.ci/icount --target
+//! thumbv6m-none-eabi`), it counts the ARMv6-M build on `mps2-an385`,
+//! whose SysTick also counts a 25 MHz clock.
 //!
 //! # The counter
 //!

@@ -62,8 +62,9 @@ const fn halfword_cells() -> bool {
 /// once (x86, x86-64, AArch64): spans are then filled with overlapping
 /// 16-byte blocks ([`fill_overlapping`]). Elsewhere such a block is a
 /// `memcpy` call or a store per byte: on RISC-V (`riscv32imc`, opt-level
-/// "s") a 2-byte-pixel span made up to seven `memcpy` calls through the
-/// blocks, and now stores aligned halfwords and words, as ARMv6-M does.
+/// "s") the framebuffer's `fill_span` of 2-byte pixels held five call
+/// sites of `memcpy` and three of `copy_from_slice` through the blocks,
+/// and now stores aligned halfwords and words, as ARMv6-M does.
 #[inline(always)]
 const fn hosts_blocks() -> bool {
     cfg!(any(
