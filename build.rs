@@ -1,9 +1,11 @@
 //! Puts `memory.x` on the linker's search path for the firmware examples
-//! (`memory-32k.x` in its place with the feature `firmware-32k`).
+//! (`memory-32k.x` in its place with the feature `firmware-32k`, and
+//! `memory-riscv.x` for RISC-V), and sets the `cfg`s of target cores that
+//! the library's code paths depend on.
 //!
-//! Only when building for an ARM target with the `firmware` feature: the
-//! library itself needs no linker script, and a crate that depends on this
-//! one brings its own `memory.x`.
+//! The memory map only when building for an ARM or 32-bit RISC-V target
+//! with the `firmware` feature: the library itself needs no linker script,
+//! and a crate that depends on this one brings its own `memory.x`.
 
 use std::{env, fs, path::PathBuf};
 
@@ -11,6 +13,7 @@ fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed=memory.x");
     println!("cargo:rerun-if-changed=memory-32k.x");
+    println!("cargo:rerun-if-changed=memory-riscv.x");
     // `unaligned_words`: the target's cores store 32-bit words at any
     // address (ARMv7-M, ARMv7E-M and ARMv8-M Mainline; not ARMv6-M or
     // ARMv8-M Baseline), which short framebuffer spans use.
@@ -28,14 +31,25 @@ fn main() {
     if target.starts_with("thumbv6m-") {
         println!("cargo:rustc-cfg=software_division");
     }
-    let arm = env::var("CARGO_CFG_TARGET_ARCH").as_deref() == Ok("arm");
+    let arch = env::var("CARGO_CFG_TARGET_ARCH").unwrap_or_default();
     let firmware = env::var_os("CARGO_FEATURE_FIRMWARE").is_some();
     // `firmware-32k`: the band firmware's map, 32 KiB of RAM in all.
     let small = env::var_os("CARGO_FEATURE_FIRMWARE_32K").is_some();
-    if arm && firmware {
+    // RISC-V firmware runs from the RAM of QEMU's `virt` board.
+    let map = match (arch.as_str(), small) {
+        ("arm", false) => Some("memory.x"),
+        ("arm", true) => Some("memory-32k.x"),
+        ("riscv32", _) => Some("memory-riscv.x"),
+        _ => None,
+    };
+    if let (Some(map), true) = (map, firmware) {
         let out = PathBuf::from(env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
-        let map = if small { "memory-32k.x" } else { "memory.x" };
-        fs::copy(map, out.join("memory.x")).expect("copy the memory map to OUT_DIR");
+        // cortex-m-rt's `link.x` includes `memory.x`; riscv-rt's map is
+        // named on the command line (`.cargo/config.toml`), under its own
+        // name, so that the linker cannot take the ARM one from the crate's
+        // root for it.
+        let name = if arch == "riscv32" { map } else { "memory.x" };
+        fs::copy(map, out.join(name)).expect("copy the memory map to OUT_DIR");
         println!("cargo:rustc-link-search={}", out.display());
     }
 }
