@@ -3,41 +3,45 @@
 //! to check the numbers repeat) and turns them into the Markdown table in
 //! `BENCHMARKS.md`. Built for `thumbv6m-none-eabi` (`.ci/icount --target
 //! thumbv6m-none-eabi`), it counts the ARMv6-M build on `mps2-an385`,
-//! whose SysTick also counts a 25 MHz clock.
+//! whose SysTick also counts a 25 MHz clock; built for
+//! `riscv32imc-unknown-none-elf`, the RISC-V build on QEMU's `virt` board.
 //!
 //! # The counter
 //!
-//! QEMU runs with `-icount shift=7`: every instruction advances virtual
-//! time by exactly 2^7 = 128 ns, whatever the host does. SysTick counts
-//! the board's 25 MHz core clock in virtual time (40 ns a tick), so `n`
-//! instructions take `3.2 n` ticks, rounded to a whole tick; because a tick
-//! is shorter than an instruction, `round(ticks / 3.2)` recovers `n`
-//! exactly. Before measuring, the firmware checks this on a loop of a
-//! known number of instructions (`cortex_m::asm::delay`: two instructions
-//! an iteration) and stops with a failure if the count is not exact. These
-//! are instructions, not cycles: QEMU does not model pipeline stalls, wait
-//! states or the cost of a taken branch.
+//! On ARM, QEMU runs with `-icount shift=7`: every instruction advances
+//! virtual time by exactly 2^7 = 128 ns, whatever the host does. SysTick
+//! counts the board's 25 MHz core clock in virtual time (40 ns a tick), so
+//! `n` instructions take `3.2 n` ticks, rounded to a whole tick; because a
+//! tick is shorter than an instruction, `round(ticks / 3.2)` recovers `n`
+//! exactly. On RISC-V, QEMU runs with `-icount shift=0`, under which the
+//! `minstret` counter reads the instructions run, exactly. Before
+//! measuring, the firmware checks its counter on a loop of a known number
+//! of instructions (`delay`) and stops with a failure if the count is not
+//! exact. These are instructions, not cycles: QEMU does not model
+//! pipeline stalls, wait states or the cost of a taken branch.
 //!
 //! Run: `.ci/icount` (or by hand: `cargo build --release --target
 //! thumbv7em-none-eabihf --example icount --features firmware`, then the
-//! runner of `.cargo/config.toml` with `-icount shift=7` added).
+//! runner of `.cargo/config.toml` with `-icount shift=7` added; the RISC-V
+//! runner has its `-icount shift=0` already).
 
-#![cfg_attr(target_arch = "arm", no_std, no_main)]
+#![cfg_attr(target_os = "none", no_std, no_main)]
 
-#[cfg(target_arch = "arm")]
+#[cfg(target_os = "none")]
 #[path = "common/builtin_scene.rs"]
 mod builtin_scene;
 
-#[cfg(target_arch = "arm")]
+#[cfg(target_os = "none")]
 #[path = "common/semihosting.rs"]
 mod semihosting;
 
-#[cfg(target_arch = "arm")]
+#[cfg(target_os = "none")]
 mod target {
     use core::hint::black_box;
 
+    #[cfg(target_arch = "arm")]
     use cortex_m::peripheral::{syst::SystClkSource, SYST};
-    use cortex_m_rt::entry;
+    #[cfg(target_arch = "arm")]
     use cortex_m_semihosting::hprintln;
     use embedded_graphics_core::{
         draw_target::DrawTarget,
@@ -52,28 +56,37 @@ mod target {
         FillRule, Framebuffer, Line, Polygon, Span, SpanDrawable, StyledLine, ThickLine, Triangle,
         TriangleAlgorithm, Vertex,
     };
+    #[cfg(target_arch = "riscv32")]
+    use riscv_semihosting::hprintln;
 
     use super::builtin_scene::{self, SceneBuffer, HUGE, SCREEN, TWIN};
 
     /// QEMU's `-icount shift`: 2^SHIFT ns of virtual time per instruction.
+    #[cfg(target_arch = "arm")]
     const SHIFT: u32 = 7;
     /// SysTick's clock on mps2-an386: the 25 MHz core clock.
+    #[cfg(target_arch = "arm")]
     const SYSTICK_HZ: u64 = 25_000_000;
 
     /// Instructions in `ticks` SysTick ticks: `ticks / (2^SHIFT ns * 25 MHz)`,
     /// rounded to the nearest integer.
+    #[cfg(target_arch = "arm")]
     fn instructions(ticks: u32) -> u32 {
         let den = (1u64 << SHIFT) * SYSTICK_HZ;
         ((u64::from(ticks) * 1_000_000_000 + den / 2) / den) as u32
     }
 
-    /// Counts the instructions a closure runs, less the measurement's own.
+    /// Counts the instructions a closure runs, less the measurement's own:
+    /// by SysTick on ARM, by the `minstret` counter on RISC-V (QEMU counts
+    /// it exactly with `-icount shift=0`).
     struct Counter {
+        #[cfg(target_arch = "arm")]
         syst: SYST,
         overhead: u32,
     }
 
     impl Counter {
+        #[cfg(target_arch = "arm")]
         fn new(mut syst: SYST) -> Self {
             syst.disable_interrupt();
             syst.set_clock_source(SystClkSource::Core);
@@ -85,8 +98,16 @@ mod target {
             counter
         }
 
+        #[cfg(target_arch = "riscv32")]
+        fn new() -> Self {
+            let mut counter = Self { overhead: 0 };
+            counter.overhead = counter.raw(&mut || {});
+            counter
+        }
+
         /// Instructions from one read of the counter to the next around
         /// `f` (a dynamic call, so the overhead is the same for every `f`).
+        #[cfg(target_arch = "arm")]
         #[inline(never)]
         fn raw(&mut self, f: &mut dyn FnMut()) -> u32 {
             // Restart from the reload value: 2^24 ticks (5.2 M instructions)
@@ -104,20 +125,46 @@ mod target {
             instructions(t0 - t1)
         }
 
+        #[cfg(target_arch = "riscv32")]
+        #[inline(never)]
+        fn raw(&mut self, f: &mut dyn FnMut()) -> u32 {
+            let t0 = riscv::register::minstret::read64();
+            f();
+            let t1 = riscv::register::minstret::read64();
+            u32::try_from(t1 - t0).expect("batch too long for a u32 count")
+        }
+
         fn count(&mut self, mut f: impl FnMut()) -> u32 {
             self.raw(&mut f) - self.overhead
+        }
+    }
+
+    /// A busy loop of `n` or so iterations: `cortex_m::asm::delay(n)` runs
+    /// `n + 1` iterations of `subs; bne`, `riscv::asm::delay(n)` `1 + n /
+    /// 2` of `addi; bne`.
+    fn delay(n: u32) {
+        #[cfg(target_arch = "arm")]
+        cortex_m::asm::delay(n);
+        #[cfg(target_arch = "riscv32")]
+        riscv::asm::delay(n);
+    }
+
+    /// Instructions the loop of [`delay`] runs for `n`, calls aside.
+    const fn delay_loop(n: u32) -> u32 {
+        match cfg!(target_arch = "arm") {
+            true => 2 * (n + 1),
+            false => 2 * (1 + n / 2),
         }
     }
 
     /// Checks the counter on loops of known length; panics (exit failure)
     /// if it is off by even one instruction.
     fn validate(counter: &mut Counter) {
-        let delay = |n: u32| move || cortex_m::asm::delay(black_box(n));
+        let delay = |n: u32| move || delay(black_box(n));
         let short = counter.count(delay(1_000));
         let long = counter.count(delay(301_000));
         let again = counter.count(delay(301_000));
-        // delay(n) runs n + 1 iterations of `subs; bne`.
-        let expected = 2 * 300_000;
+        let expected = delay_loop(301_000) - delay_loop(1_000);
         hprintln!(
             "validate\tdelay(1000)={}\tdelay(301000)={}\tdifference={}\texpected={}",
             short,
@@ -128,7 +175,7 @@ mod target {
         assert_eq!(long - short, expected, "instruction counter is not exact");
         assert_eq!(long, again, "instruction counter does not repeat");
         // The loop plus a few instructions of call and setup.
-        let loop_only = 2 * 1_001;
+        let loop_only = delay_loop(1_000);
         assert!(
             (loop_only..=loop_only + 16).contains(&short),
             "delay(1000) = {short}"
@@ -364,17 +411,59 @@ mod target {
         n
     }
 
-    #[entry]
+    /// The band buffers of 16 and 8 rows.
+    type Band16 = Band<16, { buffer_size::<Rgb565Le>(320, 16) }>;
+    type Band8 = Band<8, { buffer_size::<Rgb565Le>(320, 8) }>;
+
+    #[cfg(target_arch = "arm")]
+    #[cortex_m_rt::entry]
     fn main() -> ! {
         // cortex-m-rt turns these into `&'static mut` (in .bss): no unsafe.
         static mut FB: SceneBuffer = SceneBuffer::new();
         static mut RECTS: [Rectangle; 8192] = [Rectangle::zero(); 8192];
         static mut LIST: SceneList<'static> = SceneList::new();
         static mut SHAPES: Option<builtin_scene::SceneShapes> = None;
-        static mut BAND16: Band<16, { buffer_size::<Rgb565Le>(320, 16) }> = Band::new();
-        static mut BAND8: Band<8, { buffer_size::<Rgb565Le>(320, 8) }> = Band::new();
+        static mut BAND16: Band16 = Band::new();
+        static mut BAND8: Band8 = Band::new();
         let peripherals = cortex_m::Peripherals::take().expect("peripherals");
-        let mut counter = Counter::new(peripherals.SYST);
+        let counter = Counter::new(peripherals.SYST);
+        measure(counter, FB, RECTS, LIST, SHAPES, BAND16, BAND8)
+    }
+
+    #[cfg(target_arch = "riscv32")]
+    #[riscv_rt::entry]
+    fn main() -> ! {
+        // riscv-rt has no safe `static mut`: all of it on the stack, which
+        // has the board's RAM.
+        let mut fb = SceneBuffer::new();
+        let mut rects = [Rectangle::zero(); 8192];
+        let mut shapes = None;
+        let mut list = SceneList::new();
+        let (mut band16, mut band8) = (Band16::new(), Band8::new());
+        let counter = Counter::new();
+        measure(
+            counter,
+            &mut fb,
+            &mut rects,
+            &mut list,
+            &mut shapes,
+            &mut band16,
+            &mut band8,
+        )
+    }
+
+    /// Checks the counter, then counts every row of the table and prints
+    /// it.
+    #[allow(non_snake_case)]
+    fn measure<'a>(
+        mut counter: Counter,
+        FB: &mut SceneBuffer,
+        RECTS: &mut [Rectangle; 8192],
+        LIST: &mut SceneList<'a>,
+        SHAPES: &'a mut Option<builtin_scene::SceneShapes>,
+        BAND16: &mut Band16,
+        BAND8: &mut Band8,
+    ) -> ! {
         validate(&mut counter);
         hprintln!("overhead\t{}", counter.overhead);
 
@@ -542,12 +631,12 @@ mod target {
 
         // The built-in scene from a display list: the whole frame, then
         // bands of 16 and 8 rows (the finished bands go nowhere).
-        let shapes: &'static builtin_scene::SceneShapes =
+        let shapes: &'a builtin_scene::SceneShapes =
             SHAPES.insert(builtin_scene::SceneShapes::new());
         if builtin_scene::for_each_command(shapes, |c| LIST.push(c)).is_err() {
             panic!("the scene does not fit the list");
         }
-        let list: &SceneList<'static> = LIST;
+        let list: &SceneList<'a> = LIST;
         let whole = counter.count(|| {
             let Ok(()) = list.draw_with_depth(&mut *FB, None);
         });
@@ -560,7 +649,7 @@ mod target {
     }
 }
 
-#[cfg(not(target_arch = "arm"))]
+#[cfg(not(target_os = "none"))]
 fn main() {
     eprintln!(
         "icount is Cortex-M firmware: run .ci/icount, which builds it for \
