@@ -64,7 +64,11 @@ const fn halfword_cells() -> bool {
 /// `memcpy` call or a store per byte: on RISC-V (`riscv32imc`, opt-level
 /// "s") the framebuffer's `fill_span` of 2-byte pixels held five call
 /// sites of `memcpy` and three of `copy_from_slice` through the blocks,
-/// and now stores aligned halfwords and words, as ARMv6-M does.
+/// and now stores aligned halfwords and words, as ARMv6-M does
+/// (`.ci/icount --target riscv32imc-unknown-none-elf`, the built-in
+/// scene: 2,689,372 → 991,071 instructions at opt-level "s", 787,232 →
+/// 605,983 at 3, though 16 px triangles went 1,343 → 1,611 there, where
+/// the blocks were inlined).
 #[inline(always)]
 const fn hosts_blocks() -> bool {
     cfg!(any(
