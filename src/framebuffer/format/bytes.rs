@@ -321,9 +321,10 @@ fn fill_bytes<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
 }
 
 /// `bytes`, whole pixels, filled with `pixel` one pixel at a time; on
-/// ARMv6-M 2-byte pixels as `u16` stores ([`halfword_cells`]) where the
-/// span is 2-byte aligned (always in the framebuffer, whose buffer is
-/// word-aligned).
+/// cores that are neither hosts nor `unaligned_words` Cortex-M cores
+/// (ARMv6-M, RISC-V) 2-byte pixels as `u16` stores ([`halfword_cells`])
+/// where the span is 2-byte aligned (always in the framebuffer, whose
+/// buffer is word-aligned).
 #[inline(always)]
 fn fill_pixels<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
     fill_pixels_as(bytes, pixel, halfword_cells());
