@@ -507,9 +507,7 @@ fn fill_unaligned_words<const B: usize>(bytes: &mut [u8], pixel: [u8; B]) {
             true => u32::from_ne_bytes(word).rotate_right(turn),
             false => u32::from_ne_bytes(word).rotate_left(turn),
         };
-        for block in words.as_chunks_mut::<8>().0 {
-            *block = [aligned; 8];
-        }
+        fill_blocks(words.as_chunks_mut::<8>().0, aligned);
     }
     // The word at byte `at`, if it lies in the span.
     let mut put = |at: usize| {
@@ -673,10 +671,17 @@ fn fill_rows_words<'a, const B: usize>(
 #[inline(always)]
 fn fill_u32(words: &mut [u32], word: u32) {
     let (blocks, rest) = words.as_chunks_mut::<8>();
+    fill_blocks(blocks, word);
+    rest.fill(word);
+}
+
+/// Every word of `blocks` set to `word`, a block's eight stores written
+/// out (see [`fill_u32`]).
+#[inline(always)]
+fn fill_blocks(blocks: &mut [[u32; 8]], word: u32) {
     for [a, b, c, d, e, f, g, h] in blocks {
         (*a, *b, *c, *d, *e, *f, *g, *h) = (word, word, word, word, word, word, word, word);
     }
-    rest.fill(word);
 }
 
 /// [`PixelFormat::write_span`] for `B`-byte pixels.
