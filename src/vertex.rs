@@ -88,6 +88,7 @@ impl Vertex {
     ///
     /// assert_eq!(Vertex::from_raw(-7, 9).raw(), (-7, 9));
     /// ```
+    #[inline(always)]
     pub const fn raw(self) -> (i32, i32) {
         (self.x.to_bits(), self.y.to_bits())
     }

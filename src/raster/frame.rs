@@ -102,7 +102,7 @@ impl Frame {
         v: &[Vertex; 3],
         clip: &Rectangle,
     ) -> Option<(Self, [(i32, i32); 3])> {
-        let [a, b, c] = v.map(|v| v.raw());
+        let [a, b, c] = [v[0].raw(), v[1].raw(), v[2].raw()];
         let left = a.0.min(b.0).min(c.0);
         let right = a.0.max(b.0).max(c.0);
         if right.abs_diff(left) >= SMALL as u32 || c.1.abs_diff(a.1) >= SMALL as u32 {
