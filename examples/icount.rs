@@ -453,7 +453,8 @@ mod target {
     }
 
     /// Checks the counter, then counts every row of the table and prints
-    /// it.
+    /// it. The parameters keep the names of the ARM entry's statics, which
+    /// the body used before RISC-V came.
     #[allow(non_snake_case)]
     fn measure<'a>(
         mut counter: Counter,
