@@ -31,6 +31,14 @@ fn main() {
     if target.starts_with("thumbv6m-") {
         println!("cargo:rustc-cfg=software_division");
     }
+    // `optimize_for_size`: this crate is built at opt-level "s" or "z"
+    // (Cargo's `OPT_LEVEL` for the profile being built, per-package
+    // overrides included), where a few loops are written out that the
+    // compiler then leaves as loops.
+    println!("cargo::rustc-check-cfg=cfg(optimize_for_size)");
+    if matches!(env::var("OPT_LEVEL").as_deref(), Ok("s" | "z")) {
+        println!("cargo:rustc-cfg=optimize_for_size");
+    }
     let arch = env::var("CARGO_CFG_TARGET_ARCH").unwrap_or_default();
     let firmware = env::var_os("CARGO_FEATURE_FIRMWARE").is_some();
     // `firmware-32k`: the band firmware's map, 32 KiB of RAM in all.
