@@ -4,7 +4,7 @@
 //! `black_box` instead of drawn), so the `.text` the library adds is the
 //! difference to `size_triangles` and `firmware`: `bash .ci/codesize`.
 
-#![cfg_attr(target_arch = "arm", no_std, no_main)]
+#![cfg_attr(target_os = "none", no_std, no_main)]
 
 #[macro_use]
 #[path = "common/size_firmware.rs"]

@@ -4,7 +4,7 @@
 //! 320 x 240 Rgb565 framebuffer, then the checksum over semihosting.
 //! Compare its `.text` with `size_baseline`: `bash .ci/codesize`.
 
-#![cfg_attr(target_arch = "arm", no_std, no_main)]
+#![cfg_attr(target_os = "none", no_std, no_main)]
 
 #[macro_use]
 #[path = "common/size_firmware.rs"]

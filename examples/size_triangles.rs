@@ -5,7 +5,7 @@
 //! its `.text` with `size_baseline` (no drawing) and `firmware` (every
 //! primitive): `bash .ci/codesize`.
 
-#![cfg_attr(target_arch = "arm", no_std, no_main)]
+#![cfg_attr(target_os = "none", no_std, no_main)]
 
 #[macro_use]
 #[path = "common/size_firmware.rs"]

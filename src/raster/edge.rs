@@ -90,12 +90,14 @@ impl<T: Narrow> Edge<T> {
     /// `2^55` for `i64` ones (below `2^33`): the numerator fits 64 bits,
     /// and 32 when the edge is short.
     ///
-    /// Not inlined on 32-bit ARM: a triangle sets up three edges, and one
-    /// copy of this code per width is smaller there, at the price of a
-    /// call. Hosts inline it (the returned record read back right after
-    /// its field-wise stores stalls store forwarding on x86-64).
-    #[cfg_attr(target_arch = "arm", inline(never))]
-    #[cfg_attr(not(target_arch = "arm"), inline(always))]
+    /// Not inlined on 32-bit ARM, nor on any target built for size
+    /// (`optimize_for_size`): a triangle sets up three edges, and one
+    /// copy of this code per width is smaller, at the price of a call (see
+    /// the triangle walk's `ONE_ROW_LOOP` for RISC-V's figures). Hosts
+    /// inline it (the returned record read back right after its
+    /// field-wise stores stalls store forwarding on x86-64).
+    #[cfg_attr(any(target_arch = "arm", optimize_for_size), inline(never))]
+    #[cfg_attr(not(any(target_arch = "arm", optimize_for_size)), inline(always))]
     pub(crate) fn new(top: (T, T), bottom: (T, T), from_row: i32) -> Option<Self> {
         // Differences of coordinates within the bound fit T.
         let (dx, dy) = (bottom.0 - top.0, bottom.1 - top.1);

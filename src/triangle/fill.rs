@@ -77,7 +77,7 @@ pub(crate) fn triangle_spans<E>(
             // side), so every crossing rounds up to column 0 or right of
             // it: hosts skip the left clamp there (see `rows`). 32-bit ARM
             // keeps one copy of the row loop (flash).
-            let left_clamp = cfg!(target_arch = "arm") || !small;
+            let left_clamp = ONE_ROW_LOOP || !small;
             walk(&frame, p, narrow_edges(small), left_clamp, &mut emit)
         }
         Some(Placed::Wide(frame)) => match relative::<i64>(&frame, &v) {
@@ -88,6 +88,20 @@ pub(crate) fn triangle_spans<E>(
         None => Ok(()),
     }
 }
+
+/// Whether the triangle walk keeps one copy of its row loop, with the
+/// left clamp on every row: on 32-bit ARM, and on every target built for
+/// size (`optimize_for_size`). Hosts at other levels also take a copy
+/// without the clamp for the small frame's triangles.
+///
+/// On RISC-V (`riscv32imc`) at opt-level "s", with [`Edge::new`] out of
+/// line there too: flat triangles' flash 9,816 → 7,320 bytes (`bash
+/// .ci/codesize`), for 16 px triangles 1,755 → 1,795 instructions, 4 px
+/// 736 → 753, the built-in scene 678,152 → 689,136 and in 16-row bands
+/// 1,104,540 → 1,182,112 (`.ci/icount`). The clamp alone: 9,080 bytes,
+/// 16 px 1,800, the scene 686,540. Dropping [`walk_tiny`] as well would
+/// save 976 bytes more, but took 4 px triangles to 919.
+const ONE_ROW_LOOP: bool = cfg!(target_arch = "arm") || cfg!(optimize_for_size);
 
 /// The height (raw units) under which a small triangle takes
 /// [`walk_tiny`] on hosts: four rows.
