@@ -76,7 +76,8 @@ pub(crate) fn triangle_spans<E>(
             // (its origin is the first centre at or after the box's left
             // side), so every crossing rounds up to column 0 or right of
             // it: hosts skip the left clamp there (see `rows`). 32-bit ARM
-            // keeps one copy of the row loop (flash).
+            // and builds for size keep one copy of the row loop
+            // ([`ONE_ROW_LOOP`]).
             let left_clamp = ONE_ROW_LOOP || !small;
             walk(&frame, p, narrow_edges(small), left_clamp, &mut emit)
         }
@@ -91,8 +92,8 @@ pub(crate) fn triangle_spans<E>(
 
 /// Whether the triangle walk keeps one copy of its row loop, with the
 /// left clamp on every row: on 32-bit ARM, and on every target built for
-/// size (`optimize_for_size`). Hosts at other levels also take a copy
-/// without the clamp for the small frame's triangles.
+/// size (`optimize_for_size`). Elsewhere a second copy, without the
+/// clamp, walks the small frame's triangles.
 ///
 /// On RISC-V (`riscv32imc`) at opt-level "s", with [`Edge::new`] out of
 /// line there too: flat triangles' flash 9,816 → 7,320 bytes (`bash
