@@ -64,6 +64,7 @@ mod variants;
 
 pub use bresenham::LinePixels;
 pub use polyline::{Polyline, StyledPolyline, StyledPolylineVariant};
+pub use variants::StyledLineVariant;
 
 use embedded_graphics_core::{
     geometry::{Point, Size},
@@ -483,22 +484,6 @@ impl RunSource for Exact {
     }
 }
 
-/// As runs.
-impl RunSource for LineAlgorithm {
-    fn draw_thin<C: PixelColor, S: SpanSink<C>>(
-        self,
-        line: &Line,
-        skip_end: bool,
-        color: C,
-        sink: &mut S,
-    ) -> Result<(), S::Error> {
-        let clip = sink.bounds();
-        line.runs(self, &clip, skip_end, &mut |r: Run| {
-            fill_run(sink, r, color)
-        })
-    }
-}
-
 /// A [`Line`] with a colour: the exact 1-pixel line, a
 /// [`Drawable`](embedded_graphics_core::Drawable).
 ///
@@ -663,89 +648,6 @@ impl<C: PixelColor> SpanDrawable for ThickLine<C> {
 
     fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
         draw_segment(self.line, self.width, Exact, false, self.color, sink)
-    }
-}
-
-/// A [`StyledLine`] whose 1-pixel pixels come from a chosen
-/// [`LineAlgorithm`], made by [`StyledLine::algorithm`]: a [`Drawable`](embedded_graphics_core::Drawable).
-/// Thick lines are the same rectangles whatever the algorithm.
-///
-/// # Examples
-///
-/// ```
-/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
-/// use embedded_raster::{framebuffer::{buffer_size, BinaryMsb}, Framebuffer, Line, LineAlgorithm};
-///
-/// let mut fb = Framebuffer::<BinaryMsb, 16, 16, { buffer_size::<BinaryMsb>(16, 16) }>::new();
-/// Line::new(Point::new(0, 0), Point::new(15, 6))
-///     .stroke(BinaryColor::On)
-///     .algorithm(LineAlgorithm::Dda)
-///     .draw(&mut fb)?;
-/// assert_eq!(fb.pixel(Point::new(15, 6)), Some(BinaryColor::On));
-/// # Ok::<(), core::convert::Infallible>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct StyledLineVariant<C> {
-    /// The geometry.
-    pub line: Line,
-    /// The stroke colour.
-    pub color: C,
-    /// The stroke width in pixels.
-    pub width: u32,
-    /// How 1-pixel lines choose their pixels.
-    pub algorithm: LineAlgorithm,
-}
-
-impl<C> StyledLineVariant<C> {
-    /// Sets the stroke width in pixels.
-    ///
-    /// Any `u32`: 0 draws nothing; 1 is the 1-pixel line; 2 and more is a
-    /// filled rectangle that wide (module docs, "Thick lines"), widths over
-    /// 65535 drawn as 65535.
-    ///
-    /// # Examples
-    ///
-    /// ```
-    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
-    /// use embedded_raster::{Line, LineAlgorithm};
-    ///
-    /// let s = Line::new(Point::zero(), Point::new(5, 5)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive).stroke_width(3);
-    /// assert_eq!(s.width, 3);
-    /// ```
-    pub const fn stroke_width(mut self, width: u32) -> Self {
-        self.width = width;
-        self
-    }
-
-    /// Sets the algorithm of 1-pixel lines.
-    ///
-    /// # Examples
-    ///
-    /// ```
-    /// use embedded_graphics::{geometry::Point, pixelcolor::BinaryColor};
-    /// use embedded_raster::{Line, LineAlgorithm};
-    ///
-    /// let s = Line::new(Point::zero(), Point::new(5, 2)).stroke(BinaryColor::On).algorithm(LineAlgorithm::Naive).algorithm(LineAlgorithm::Dda);
-    /// assert_eq!(s.algorithm, LineAlgorithm::Dda);
-    /// ```
-    pub const fn algorithm(mut self, algorithm: LineAlgorithm) -> Self {
-        self.algorithm = algorithm;
-        self
-    }
-}
-
-impl<C: PixelColor> SpanDrawable for StyledLineVariant<C> {
-    type Color = C;
-
-    fn draw_spans<S: SpanSink<C>>(&self, sink: &mut S) -> Result<(), S::Error> {
-        draw_segment(
-            self.line,
-            self.width,
-            self.algorithm,
-            false,
-            self.color,
-            sink,
-        )
     }
 }
 

@@ -3,6 +3,7 @@
 
 mod bytes;
 mod packed;
+mod stores;
 
 pub use bytes::{Bgr565Be, Bgr565Le, Gray8Bytes, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes};
 pub use packed::{BinaryMsb, Gray2Lsb, Gray2Msb, Gray4Lsb, Gray4Msb};
