@@ -309,21 +309,54 @@ fn whole_range_lines_clip_without_walking() {
         Point::new(i32::MAX, i32::MAX),
         Size::new(u32::MAX, u32::MAX),
     );
+    let mut lit = 0;
     for (a, b) in [
         ((MAX, MAX), (MAX - 5, MAX - 2)),
         ((MIN, MIN), (MIN + 3, MIN + 7)),
     ] {
         let line = Line::new(p(a.0, a.1), p(b.0, b.1));
         for clip in [huge, top] {
-            let mut n = 0;
-            line.for_each_run(&clip, |r| {
-                n += r.len;
-                Ok::<(), ()>(())
-            })
-            .unwrap();
-            assert!(n <= 8, "{line:?} in {clip:?}: {n}");
+            let win = Window {
+                x0: clip.top_left.x.into(),
+                y0: clip.top_left.y.into(),
+                w: clip.size.width.into(),
+                h: clip.size.height.into(),
+            };
+            let got = drawn(line, LineAlgorithm::Bresenham, win);
+            // The reference over the line's bounding box within the clip
+            // (not over the whole clip: 2^32 columns).
+            let (x0, x1) = (
+                a.0.min(b.0).max(win.x0),
+                a.0.max(b.0).min(win.x0 + win.w - 1),
+            );
+            let (y0, y1) = (
+                a.1.min(b.1).max(win.y0),
+                a.1.max(b.1).min(win.y0 + win.h - 1),
+            );
+            let mut want = match x0 <= x1 && y0 <= y1 {
+                true => reference(
+                    line.start,
+                    line.end,
+                    Window {
+                        x0,
+                        y0,
+                        w: x1 - x0 + 1,
+                        h: y1 - y0 + 1,
+                    },
+                ),
+                false => vec![],
+            };
+            want.sort();
+            assert_eq!(got, want, "{line:?} in {clip:?}");
+            lit += want.len();
         }
     }
+    // By hand: the clip from `i32::MAX` holds the first line's end pixel
+    // (`i32::MAX`, `i32::MAX`); the one from `i32::MIN`, which ends just
+    // before `i32::MAX`, the first line's 4 pixels off its last row (at
+    // x = MAX - 5 .. MAX - 2, rows MAX - 2 and MAX - 1) and the second
+    // line's 8.
+    assert_eq!(lit, 13);
 }
 
 #[test]
@@ -442,15 +475,28 @@ proptest! {
     /// The crate's framebuffer walks steep lines through its bytes and
     /// writes shallow ones as runs (`SpanSink::fill_line`): both light
     /// exactly the reference's pixels, and `Line::pixels` lists them.
+    /// Lines of every length up to the whole `i32` range: half of them
+    /// through a pixel of the framebuffer (at fraction `k` of the line,
+    /// unless an end is clamped to the range), half anywhere.
     #[test]
     fn framebuffer_lines_match_the_reference(
         scale in 2u32..=31,
         c in prop::array::uniform4(any::<i64>()),
+        through in any::<bool>(),
+        q in (0i64..32, 0i64..24),
+        k in any::<u16>(),
     ) {
         use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, SpanDrawable};
         let r = 1i64 << scale;
-        let at = |k: usize| (c[k].rem_euclid(2 * r + 1) - r + 16).clamp(MIN, MAX);
-        let line = Line::new(p(at(0), at(1)), p(at(2), at(3)));
+        let at = |k: usize| c[k].rem_euclid(2 * r + 1) - r;
+        let line = if through {
+            let (dx, dy) = (at(0), at(1));
+            let k = i64::from(k);
+            let a = (q.0 - dx * k / 65535, q.1 - dy * k / 65535);
+            Line::new(p(a.0, a.1), p(a.0 + dx, a.1 + dy))
+        } else {
+            Line::new(p(at(0) + 16, at(1) + 16), p(at(2) + 16, at(3) + 16))
+        };
         let win = Window { x0: 0, y0: 0, w: 32, h: 24 };
         let mut fb = Framebuffer::<Gray8Bytes, 32, 24, { buffer_size::<Gray8Bytes>(32, 24) }>::new();
         line.stroke(Gray8::WHITE).draw_spans(&mut fb).unwrap();

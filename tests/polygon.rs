@@ -630,10 +630,34 @@ fn concave_polygon_draws_as_clipped_spans() {
     assert_eq!((d.calls, d.pixels), (30, u64::from(want)));
 }
 
+/// Clip rectangles that reach the ends of `i32`, on a concave polygon as
+/// large as the 20.12 range (its pixels lie in -524288..524288 both
+/// ways): those that miss it get no span; one as wide as `i32` across its
+/// top edge and one as tall as `i32` through its notch get exactly the
+/// reference's pixels, every span inside the clip.
 #[test]
 fn clip_rectangles_at_the_ends_of_i32() {
     let big = [v(MIN, MIN), v(MAX, MIN), v(MAX, MAX), v(0, 0), v(MIN, MAX)];
-    let p = Polygon::<CAP>::new(&big).unwrap();
+    let poly = Polygon::<CAP>::new(&big).unwrap();
+    let pts = big.map(common::raw);
+    let lit = |x: i64, y: i64| common::winding(&pts, common::centre(x, y)) % 2 != 0;
+    let spans = |clip: &Rectangle| {
+        let mut runs = std::collections::BTreeSet::new();
+        poly.for_each_span(FillRule::EvenOdd, clip, |s| {
+            let (x0, y0) = (i64::from(clip.top_left.x), i64::from(clip.top_left.y));
+            let (w, h) = (i64::from(clip.size.width), i64::from(clip.size.height));
+            let (xs, xe, y) = (i64::from(s.x_start), i64::from(s.x_end), i64::from(s.y));
+            assert!(
+                x0 <= xs && xs < xe && xe <= x0 + w,
+                "{s:?} outside {clip:?}"
+            );
+            assert!(y0 <= y && y < y0 + h, "{s:?} outside {clip:?}");
+            assert!(runs.insert((y, xs, xe)), "{s:?} twice");
+            Ok::<(), ()>(())
+        })
+        .unwrap();
+        runs
+    };
     for clip in [
         Rectangle::new(
             Point::new(i32::MAX, i32::MAX),
@@ -642,14 +666,35 @@ fn clip_rectangles_at_the_ends_of_i32() {
         Rectangle::new(Point::new(i32::MIN, i32::MIN), Size::new(u32::MAX, 2)),
         Rectangle::new(Point::new(0, 0), Size::new(0, 7)),
     ] {
-        let mut rows = 0;
-        p.for_each_span(FillRule::EvenOdd, &clip, |s| {
-            assert!(s.y >= clip.top_left.y && s.x_start >= clip.top_left.x);
-            rows += 1;
-            Ok::<(), ()>(())
-        })
-        .unwrap();
-        assert!(rows <= 2, "{clip:?}: {rows}");
+        assert_eq!(spans(&clip), Default::default(), "{clip:?}");
+    }
+
+    // As wide as `i32`, across the top edge: one run a row, its ends the
+    // reference's, and none above the edge.
+    let clip = Rectangle::new(Point::new(i32::MIN, -524_290), Size::new(u32::MAX, 5));
+    let rows = spans(&clip);
+    let ys: Vec<i64> = rows.iter().map(|r| r.0).collect();
+    assert_eq!(ys, [-524_288, -524_287, -524_286]);
+    for &(y, xs, xe) in &rows {
+        assert!(
+            lit(xs, y) && lit(xe - 1, y) && !lit(xs - 1, y) && !lit(xe, y),
+            "row {y}: {xs}..{xe}"
+        );
+    }
+    assert!((-4..4).all(|x| !lit(x, -524_289)));
+
+    // As tall as `i32`, six columns through the notch at (0, 0): each
+    // pixel of every row of the polygon the reference's.
+    let clip = Rectangle::new(Point::new(-3, i32::MIN), Size::new(6, u32::MAX));
+    let rows = spans(&clip);
+    assert!(rows.iter().all(|r| (-524_288..524_288).contains(&r.0)));
+    for y in -524_290..524_290 {
+        for x in -3..3 {
+            let drawn = rows
+                .range((y, i64::MIN, i64::MIN)..(y + 1, i64::MIN, i64::MIN))
+                .any(|&(_, xs, xe)| (xs..xe).contains(&x));
+            assert_eq!(drawn, lit(x, y), "({x}, {y})");
+        }
     }
 }
 

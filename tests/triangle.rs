@@ -197,10 +197,33 @@ fn triangles_at_the_32_bit_bound_are_exact() {
     }
 }
 
+/// Clip rectangles that reach the ends of `i32`: those that miss the
+/// widest triangle (its pixels lie in -524288..524288 both ways) get no
+/// span, and those as wide or as tall as `i32` across it get exactly the
+/// reference's pixels, every span inside the clip.
 #[test]
 fn clip_rectangles_at_the_ends_of_i32() {
     let t = Triangle::new(v(MIN, MIN), v(MAX, MIN), v(0, MAX));
-    let clips = [
+    let pts = t.vertices.map(common::raw);
+    let lit = |x: i64, y: i64| common::winding(&pts, common::centre(x, y)) != 0;
+    let spans = |clip: &Rectangle| {
+        let mut rows = std::collections::BTreeMap::new();
+        t.for_each_span(clip, |s| {
+            let (x0, y0) = (i64::from(clip.top_left.x), i64::from(clip.top_left.y));
+            let (w, h) = (i64::from(clip.size.width), i64::from(clip.size.height));
+            let (xs, xe, y) = (i64::from(s.x_start), i64::from(s.x_end), i64::from(s.y));
+            assert!(
+                x0 <= xs && xs < xe && xe <= x0 + w,
+                "{s:?} outside {clip:?}"
+            );
+            assert!(y0 <= y && y < y0 + h, "{s:?} outside {clip:?}");
+            assert!(rows.insert(y, (xs, xe)).is_none(), "row {y} twice");
+            Ok::<(), ()>(())
+        })
+        .unwrap();
+        rows
+    };
+    let missing = [
         Rectangle::new(
             Point::new(i32::MAX, i32::MAX),
             Size::new(u32::MAX, u32::MAX),
@@ -209,17 +232,41 @@ fn clip_rectangles_at_the_ends_of_i32() {
         Rectangle::new(Point::new(i32::MAX - 1, 0), Size::new(2, 2)),
         Rectangle::new(Point::new(0, 0), Size::new(0, 10)),
     ];
-    for clip in clips {
-        let mut pixels = 0u64;
-        t.for_each_span(&clip, |s| {
-            assert!(s.y >= clip.top_left.y && s.x_start >= clip.top_left.x);
-            pixels += u64::from(s.len());
-            Ok::<(), ()>(())
-        })
-        .unwrap();
-        // The triangle covers the first clip's corner at (i32::MIN, i32::MIN)
-        // only with rows -524288..; only the second clip reaches it.
-        assert!(pixels <= 3 * (1 << 20), "{clip:?}: {pixels}");
+    for clip in &missing {
+        assert_eq!(spans(clip), Default::default(), "{clip:?}");
+    }
+
+    // As wide as `i32`, across the top edge and across the apex: in each
+    // row of the clip, the span's ends are the reference's (the triangle
+    // is convex, so its pixels in a row are one run).
+    for (y0, h) in [(-524_290, 6), (524_283, 8)] {
+        let clip = Rectangle::new(Point::new(i32::MIN, y0), Size::new(u32::MAX, h));
+        let rows = spans(&clip);
+        for y in i64::from(y0)..i64::from(y0) + i64::from(h) {
+            match rows.get(&y) {
+                Some(&(xs, xe)) => assert!(
+                    lit(xs, y) && lit(xe - 1, y) && !lit(xs - 1, y) && !lit(xe, y),
+                    "row {y}: {xs}..{xe}"
+                ),
+                // Above the top edge, or so near the apex (x = 0) that
+                // no pixel centre is inside.
+                None => assert!(
+                    (y < -524_288 || y > 524_280) && (-4..4).all(|x| !lit(x, y)),
+                    "row {y} has no span"
+                ),
+            }
+        }
+    }
+    // As tall as `i32`, six columns through the apex: every row of the
+    // triangle, each pixel the reference's.
+    let clip = Rectangle::new(Point::new(-3, i32::MIN), Size::new(6, u32::MAX));
+    let rows = spans(&clip);
+    assert!(rows.keys().all(|y| (-524_288..524_288).contains(y)));
+    for y in -524_290..524_290 {
+        let (xs, xe) = rows.get(&y).copied().unwrap_or((0, 0));
+        for x in -3..3 {
+            assert_eq!((xs..xe).contains(&x), lit(x, y), "({x}, {y})");
+        }
     }
 }
 
@@ -518,20 +565,18 @@ proptest! {
         use embedded_graphics_core::pixelcolor::Gray8;
         use embedded_raster::{framebuffer::{buffer_size, Gray8Bytes}, Framebuffer, SpanDrawable};
         type Fb = Framebuffer<Gray8Bytes, 40, 30, { buffer_size::<Gray8Bytes>(40, 30) }>;
-        // Half the cases: the triangle moved so a corner or its centroid
-        // is in the window.
+        // Half the cases: the triangle moved so that a corner or a point
+        // of its bounding box (`focus`, in 20.12 units) lands on pixel
+        // (20, 15), the window's middle; a vertex moved past the range is
+        // clamped into it, which keeps that point in the bounding box.
         let t = if on_screen {
             let (cx, cy) = focus(&t, usize::from(f.0 % 4), f.0, f.1);
-            let (dx, dy) = (20 * 4096 - cx * 4096, 15 * 4096 - cy * 4096);
-            let moved = t.vertices.map(|p| {
+            let (dx, dy) = (20 * 4096 - cx, 15 * 4096 - cy);
+            let [a, b, c] = t.vertices.map(|p| {
                 let (x, y) = p.raw();
-                (i64::from(x) + dx, i64::from(y) + dy)
+                v(i64::from(x) + dx, i64::from(y) + dy)
             });
-            if moved.iter().all(|&(x, y)| (MIN..=MAX).contains(&x) && (MIN..=MAX).contains(&y)) {
-                Triangle::new(v(moved[0].0, moved[0].1), v(moved[1].0, moved[1].1), v(moved[2].0, moved[2].1))
-            } else {
-                t
-            }
+            Triangle::new(a, b, c)
         } else {
             t
         };

@@ -1,17 +1,70 @@
 //! Thick lines: their rectangle, shared edges, the whole range.
 
-use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
+use embedded_graphics_core::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
 use embedded_raster::{sim::SimDisplay, Line};
 use proptest::prelude::*;
 
 use super::{any_line, extreme_line, p, window_on};
 
+/// A display whose top-left pixel is `origin`, anywhere in the `i32`
+/// plane: what is drawn is moved by `-origin` (in `i64`) onto the
+/// display, so a window far away is seen without moving the line.
+struct At<'a> {
+    display: &'a mut SimDisplay<Gray8>,
+    origin: Point,
+}
+
+impl At<'_> {
+    fn onto(&self, q: Point) -> Point {
+        let d = |a: i32, o: i32| {
+            i32::try_from(i64::from(a) - i64::from(o))
+                .unwrap_or_else(|_| panic!("a write at {q:?}, far outside {:?}", self.origin))
+        };
+        Point::new(d(q.x, self.origin.x), d(q.y, self.origin.y))
+    }
+}
+
+impl Dimensions for At<'_> {
+    fn bounding_box(&self) -> Rectangle {
+        Rectangle::new(self.origin, self.display.bounding_box().size)
+    }
+}
+
+impl DrawTarget for At<'_> {
+    type Color = Gray8;
+    type Error = <SimDisplay<Gray8> as DrawTarget>::Error;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Gray8>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Self::Error> {
+        let moved: Vec<_> = pixels
+            .into_iter()
+            .map(|Pixel(q, c)| Pixel(self.onto(q), c))
+            .collect();
+        self.display.draw_iter(moved)
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, color: Gray8) -> Result<(), Self::Error> {
+        let area = Rectangle::new(self.onto(area.top_left), area.size);
+        self.display.fill_solid(&area, color)
+    }
+}
+
 /// Draws `line` with `width` on a fresh `size x size` display.
 fn thick(line: Line, width: u32, size: u32) -> SimDisplay<Gray8> {
+    thick_at(line, width, size, Point::zero())
+}
+
+/// [`thick`], on a display whose top-left pixel is `origin`.
+fn thick_at(line: Line, width: u32, size: u32, origin: Point) -> SimDisplay<Gray8> {
     let mut d = SimDisplay::new(size, size, Gray8::BLACK);
     line.stroke(Gray8::WHITE)
         .stroke_width(width)
-        .draw(&mut d)
+        .draw(&mut At {
+            display: &mut d,
+            origin,
+        })
         .unwrap();
     assert_eq!(d.out_of_bounds_writes(), 0);
     assert_eq!(d.write_stats().draw_iter_pixels, 0);
@@ -35,12 +88,28 @@ fn rect_margin(line: Line, width: u32, x: i64, y: i64) -> f64 {
     (u + 0.5).min(len + 0.5 - u).min(w - v.abs())
 }
 
-fn assert_thick(line: Line, width: u32, size: u32) {
-    let d = thick(line, width, size);
-    for y in 0..size as i64 {
-        for x in 0..size as i64 {
-            let c = d.write_count(Point::new(x as i32, y as i32)).unwrap();
+/// The 20.12 range of pixels, outside which thick lines light nothing
+/// (`Line::new`).
+const THICK_RANGE: core::ops::RangeInclusive<i64> = -524_288..=524_287;
+
+/// Asserts that the `size x size` window at `origin` shows the pixels of
+/// the line's rectangle (those whose centre is inside it by more than
+/// 1/1000 px lit, those outside by as much unlit), none outside the 20.12
+/// range, each at most once.
+fn assert_thick(line: Line, width: u32, size: u32, origin: Point) {
+    let d = thick_at(line, width, size, origin);
+    for j in 0..size as i64 {
+        for i in 0..size as i64 {
+            let c = d.write_count(Point::new(i as i32, j as i32)).unwrap();
+            let (x, y) = (i64::from(origin.x) + i, i64::from(origin.y) + j);
             assert!(c <= 1, "{line:?} w {width}: ({x}, {y}) written {c} times");
+            if !THICK_RANGE.contains(&x) || !THICK_RANGE.contains(&y) {
+                assert_eq!(
+                    c, 0,
+                    "{line:?} w {width}: ({x}, {y}) lit past the 20.12 range"
+                );
+                continue;
+            }
             let m = rect_margin(line, width, x, y);
             if m > 1e-3 {
                 assert_eq!(
@@ -63,7 +132,7 @@ proptest! {
         c in prop::array::uniform4(-8i64..40),
         width in 2u32..12,
     ) {
-        assert_thick(Line::new(p(c[0], c[1]), p(c[2], c[3])), width, 32);
+        assert_thick(Line::new(p(c[0], c[1]), p(c[2], c[3])), width, 32, Point::zero());
     }
 
     #[test]
@@ -72,16 +141,19 @@ proptest! {
         f in any::<u16>(),
         width in 2u32..9,
     ) {
-        // Move the line so that the display sees the part near fraction f.
+        // The display placed on the part of the line near fraction f,
+        // wherever it is in the `i32` plane: mostly past the 20.12 range,
+        // where nothing may be lit.
         let win = window_on(line, f, (0, 0), (24, 24));
-        let shift = |q: Point| p(q.x as i64 - win.x0, q.y as i64 - win.y0);
-        let moved = Line::new(shift(line.start), shift(line.end));
-        if moved.start.x as i64 == line.start.x as i64 - win.x0
-            && moved.end.x as i64 == line.end.x as i64 - win.x0
-            && moved.start.y as i64 == line.start.y as i64 - win.y0
-            && moved.end.y as i64 == line.end.y as i64 - win.y0
-        {
-            assert_thick(moved, width, 24);
+        assert_thick(line, width, 24, Point::new(win.x0 as i32, win.y0 as i32));
+        // And the line moved so that this part is at the origin, well
+        // inside the range, where the move keeps both ends in `i32`.
+        let shift = |q: Point| {
+            let moved = (i64::from(q.x) - win.x0, i64::from(q.y) - win.y0);
+            Some(Point::new(i32::try_from(moved.0).ok()?, i32::try_from(moved.1).ok()?))
+        };
+        if let (Some(a), Some(b)) = (shift(line.start), shift(line.end)) {
+            assert_thick(Line::new(a, b), width, 24, Point::zero());
         }
     }
 }
