@@ -1,8 +1,11 @@
 //! The triangle variants keep their documented properties: the exact ones
-//! match the exact rasterizer everywhere, the watertight ones have no gap
-//! and no overdraw in meshes and fans at every precision, and every
-//! variant is safe (overflow checks on) at the ends of the range.
+//! light the independent reference's pixels (`tests/common`) at every size
+//! and precision, the watertight ones have no gap and no overdraw in
+//! meshes and fans at every precision (where the reference covers a pixel
+//! once), and every variant is safe (overflow checks on) at the ends of
+//! the range.
 
+mod common;
 #[path = "../examples/tradeoff/measure.rs"]
 mod measure;
 
@@ -11,21 +14,87 @@ use embedded_graphics_core::{
     primitives::Rectangle,
 };
 use embedded_raster::{SubpixelPrecision, Triangle, TriangleAlgorithm, Vertex};
-use measure::{accuracy, largest_ok, scene_sets, Variant};
+use measure::{accuracy, largest_ok, scene_sets, size_probe, Variant, SIZES};
+
+use common::Grid;
 
 const EXACT: Variant = Variant::Lib(TriangleAlgorithm::EdgeExact);
 
+/// The pixels `a` lights of `t` at precision `p` inside `clip`, one count
+/// a pixel (spans checked: in order, inside the clip, not overlapping).
+fn drawn(a: TriangleAlgorithm, p: SubpixelPrecision, t: &Triangle, clip: &Rectangle) -> Grid {
+    let mut g = grid(clip);
+    common::add_spans_from::<()>(&mut g, |clip, f| t.for_each_span_with(a, p, clip, f));
+    g
+}
+
+/// The independent reference (`tests/common`) for `t` snapped to `p`.
+fn reference(p: SubpixelPrecision, t: &Triangle, clip: &Rectangle) -> Grid {
+    let g = grid(clip);
+    common::reference_triangle(&t.snapped(p), g.x0, g.y0, g.w, g.h)
+}
+
+fn grid(clip: &Rectangle) -> Grid {
+    Grid::new(
+        clip.top_left.x.into(),
+        clip.top_left.y.into(),
+        clip.size.width as usize,
+        clip.size.height as usize,
+    )
+}
+
+const EXACT_ONES: [TriangleAlgorithm; 2] =
+    [TriangleAlgorithm::EdgeExact, TriangleAlgorithm::Barycentric];
+
 #[test]
-fn exact_variants_have_zero_mismatch() {
-    let sets = scene_sets(1);
-    for set in &sets {
-        for a in TriangleAlgorithm::ALL.into_iter().filter(|a| a.is_exact()) {
-            let acc = accuracy(Variant::Lib(a), SubpixelPrecision::Bits12, set);
-            assert_eq!(acc.differing_px, 0, "{a} on {}", set.name);
+fn exact_variants_match_the_reference() {
+    assert!(TriangleAlgorithm::ALL
+        .into_iter()
+        .all(|a| a.is_exact() == EXACT_ONES.contains(&a)));
+    let mut lit = 0;
+    for set in &scene_sets(1) {
+        for t in &set.tris {
+            let want = reference(SubpixelPrecision::Bits12, t, &set.clip);
+            lit += want.cells.iter().sum::<u32>();
+            for a in EXACT_ONES {
+                let got = drawn(a, SubpixelPrecision::Bits12, t, &set.clip);
+                assert!(
+                    got == want,
+                    "{a} on {}, {t:?}: {:?}",
+                    set.name,
+                    want.diff(&got)
+                );
+            }
         }
     }
-    // Some set must light something, or the check above is empty.
-    assert!(accuracy(EXACT, SubpixelPrecision::Bits12, &sets[0]).reference_px > 1000);
+    // The sets light something, or the check above is empty.
+    assert!(lit > 10_000, "{lit}");
+}
+
+/// The exact variants at every precision, on the irregular triangles of
+/// every size the speed/accuracy report tries (`largest_ok`, up to legs of
+/// 524,287 px), in the report's windows at the corners and the centroid.
+#[test]
+fn exact_variants_match_the_reference_at_every_size() {
+    let mut lit = 0;
+    for l in SIZES {
+        let (t, clips) = size_probe(l);
+        for p in SubpixelPrecision::ALL {
+            for clip in &clips {
+                let want = reference(p, &t, clip);
+                lit += want.cells.iter().sum::<u32>();
+                for a in EXACT_ONES {
+                    let got = drawn(a, p, &t, clip);
+                    assert!(
+                        got == want,
+                        "{a} at {p} bits, legs {l} px, {clip:?}: {:?}",
+                        want.diff(&got)
+                    );
+                }
+            }
+        }
+    }
+    assert!(lit > 10_000, "{lit}");
 }
 
 #[test]
@@ -44,26 +113,50 @@ fn barycentric_matches_the_exact_rasterizer_at_every_precision() {
     }
 }
 
+/// On meshes and fans, at every precision: where the reference covers a
+/// pixel exactly once (the mesh's inside, its vertices snapped to that
+/// precision), a watertight variant writes it exactly once too.
 #[test]
 fn watertight_variants_have_no_gap_or_overdraw() {
+    let mut inside = 0;
     for set in scene_sets(2).iter().filter(|s| s.mesh) {
-        for a in TriangleAlgorithm::ALL {
-            for p in SubpixelPrecision::ALL {
-                let acc = accuracy(Variant::Lib(a), p, set);
+        for p in SubpixelPrecision::ALL {
+            let mut once = grid(&set.clip);
+            for t in &set.tris {
+                let r = reference(p, t, &set.clip);
+                once.cells
+                    .iter_mut()
+                    .zip(&r.cells)
+                    .for_each(|(c, r)| *c += r);
+            }
+            inside += once.cells.iter().filter(|&&c| c == 1).count();
+            for a in TriangleAlgorithm::ALL {
+                let mut counts = grid(&set.clip);
+                for t in &set.tris {
+                    let g = drawn(a, p, t, &set.clip);
+                    counts
+                        .cells
+                        .iter_mut()
+                        .zip(&g.cells)
+                        .for_each(|(c, g)| *c += g);
+                }
+                let (mut gaps, mut overdraw) = (0, 0);
+                for (&r, &c) in once.cells.iter().zip(&counts.cells) {
+                    if r == 1 {
+                        gaps += usize::from(c == 0);
+                        overdraw += usize::from(c >= 2);
+                    }
+                }
                 if a.is_watertight() {
-                    assert_eq!(
-                        (acc.gaps, acc.overdraw),
-                        (0, 0),
-                        "{a} at {p} bits on {}",
-                        set.name
-                    );
+                    assert_eq!((gaps, overdraw), (0, 0), "{a} at {p} bits on {}", set.name);
                 } else {
                     // Documented as overdrawing its shared edges.
-                    assert!(acc.overdraw > 0, "{a} at {p} bits on {}", set.name);
+                    assert!(overdraw > 0, "{a} at {p} bits on {}", set.name);
                 }
             }
         }
     }
+    assert!(inside > 10_000, "{inside}");
 }
 
 #[test]
@@ -79,8 +172,8 @@ fn approximate_variants_and_the_seed_differ_measurably() {
             .sum();
         assert!(diff > 0, "{}", v.name());
     }
-    // The exact variants handle every size; the seed's 32-bit integers do not.
-    assert_eq!(largest_ok(EXACT, SubpixelPrecision::Bits12), 524_287);
+    // The seed's 32-bit integers fail on large triangles (the exact
+    // variants handle every size: `exact_variants_match_the_reference_at_every_size`).
     assert!(largest_ok(Variant::Seed000, SubpixelPrecision::Bits12) < 4096);
 }
 
@@ -181,10 +274,12 @@ fn snapping_rounds_to_nearest_ties_to_even_and_stays_in_range() {
 }
 
 /// At the documented end of the barycentric evaluator's 32-bit guarantee
-/// (`2^(31 - u) - 1` px² at `u = max(bits, 1)` subpixel bits), and 16 times
-/// beyond it, where it steps in 64 bits, it lights the exact pixels.
+/// (`2^(31 - u) - 1` px² at `u = max(bits, 1)` subpixel bits), where it
+/// steps in 32 bits, and 16 times beyond it, where it steps in 64 bits, it
+/// lights the reference's pixels.
 #[test]
 fn barycentric_is_exact_on_both_sides_of_the_32_bit_bound() {
+    let mut lit = 0;
     for p in SubpixelPrecision::ALL {
         let max = (1i64 << (31 - p.bits().max(1))) - 1;
         // A right triangle whose box is W x H pixels, W H <= max, with W a
@@ -193,29 +288,30 @@ fn barycentric_is_exact_on_both_sides_of_the_32_bit_bound() {
         let h = max / w;
         assert!(w * h <= max);
         let px = 4096;
-        let big = Triangle::new(v(0, 0), v(4 * w * px, 0), v(0, 4 * h * px));
-        // Exact in both widths: compare corners of the big one.
-        for (x, y) in [
-            (0, 0),
-            (4 * w - 24, 0),
-            (0, 4 * h - 24),
-            (2 * w - 12, 2 * h - 12),
-        ] {
-            let window = Rectangle::new(Point::new(x as i32, y as i32), Size::new(24, 24));
-            let set = measure::SceneSet {
-                name: "limit",
-                clip: window,
-                tris: vec![big],
-                mesh: false,
-            };
-            let a = accuracy(Variant::Lib(TriangleAlgorithm::Barycentric), p, &set);
-            let e = accuracy(EXACT, p, &set);
-            assert_eq!(a.differing_px, e.differing_px, "{p} bits");
+        for k in [1, 4] {
+            let t = Triangle::new(v(0, 0), v(k * w * px, 0), v(0, k * h * px));
+            for (x, y) in [
+                (0, 0),
+                (k * w - 24, 0),
+                (0, k * h - 24),
+                (k * w / 2 - 12, k * h / 2 - 12),
+            ] {
+                let clip = Rectangle::new(Point::new(x as i32, y as i32), Size::new(24, 24));
+                let want = reference(p, &t, &clip);
+                lit += want.cells.iter().sum::<u32>();
+                let got = drawn(TriangleAlgorithm::Barycentric, p, &t, &clip);
+                assert!(
+                    got == want,
+                    "{p} bits, box {}x{} px, {clip:?}: {:?}",
+                    k * w,
+                    k * h,
+                    want.diff(&got)
+                );
+            }
         }
     }
+    assert!(lit > 1000, "{lit}");
 }
-
-mod common;
 
 use proptest::prelude::*;
 

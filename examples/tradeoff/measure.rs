@@ -441,6 +441,33 @@ pub fn accuracy_vs(
     acc
 }
 
+/// The irregular triangle of legs about `l` px that [`largest_ok`] tries,
+/// and its four 48 x 48 windows: at its three corners and its centroid.
+pub fn size_probe(l: i64) -> (Triangle, [Rectangle; 4]) {
+    let f = |a: f64, b: f64| -> i64 { (a * l as f64 * 4096.0) as i64 + (b * 4096.0) as i64 };
+    let pts = [
+        (f(0.0, 0.3), f(0.0, 0.7)),
+        (f(1.0, -0.45), f(0.3, 0.1)),
+        (f(0.2, 0.6), f(1.0, -0.3)),
+    ];
+    let pts = pts.map(|(x, y)| (x.min((1 << 31) - 1), y.min((1 << 31) - 1)));
+    let t = Triangle::new(
+        raw(pts[0].0, pts[0].1),
+        raw(pts[1].0, pts[1].1),
+        raw(pts[2].0, pts[2].1),
+    );
+    let cx = (pts[0].0 + pts[1].0 + pts[2].0) / 3;
+    let cy = (pts[0].1 + pts[1].1 + pts[2].1) / 3;
+    let [a, b, c] = pts;
+    let clips = [a, b, c, (cx, cy)].map(|(x, y)| {
+        Rectangle::new(
+            Point::new((x >> 12) as i32 - 24, (y >> 12) as i32 - 24),
+            Size::new(48, 48),
+        )
+    });
+    (t, clips)
+}
+
 /// The legs tried by [`largest_ok`], in px.
 pub const SIZES: [i64; 9] = [16, 64, 256, 1024, 4096, 16384, 65536, 262144, 524287];
 
@@ -456,26 +483,9 @@ pub fn largest_ok(v: Variant, p: SubpixelPrecision) -> i64 {
     let mut best = 0;
     let mut limit = None;
     for &l in &SIZES {
-        let f = |a: f64, b: f64| -> i64 { (a * l as f64 * 4096.0) as i64 + (b * 4096.0) as i64 };
-        let pts = [
-            (f(0.0, 0.3), f(0.0, 0.7)),
-            (f(1.0, -0.45), f(0.3, 0.1)),
-            (f(0.2, 0.6), f(1.0, -0.3)),
-        ];
-        let pts = pts.map(|(x, y)| (x.min((1 << 31) - 1), y.min((1 << 31) - 1)));
-        let t = Triangle::new(
-            raw(pts[0].0, pts[0].1),
-            raw(pts[1].0, pts[1].1),
-            raw(pts[2].0, pts[2].1),
-        );
-        let cx = (pts[0].0 + pts[1].0 + pts[2].0) / 3;
-        let cy = (pts[0].1 + pts[1].1 + pts[2].1) / 3;
+        let (t, clips) = size_probe(l);
         let mut acc = Accuracy::default();
-        for (x, y) in pts.into_iter().chain([(cx, cy)]) {
-            let clip = Rectangle::new(
-                Point::new((x >> 12) as i32 - 24, (y >> 12) as i32 - 24),
-                Size::new(48, 48),
-            );
+        for clip in clips {
             let a = accuracy_vs(
                 v,
                 p,
