@@ -301,10 +301,12 @@ fn shapes_on_band_boundaries() {
     }
 }
 
-/// Commands are culled by rows: a band none of a command's rows meet does
-/// not see it (a list of one line far below the screen writes nothing).
+/// A command below the screen lights nothing in any band: no band maps
+/// its rows onto its own (whether the band culls the command by rows or
+/// clips it, which this cannot tell apart; the culling's effect on the
+/// pixels is the band-against-whole-frame tests' to check).
 #[test]
-fn commands_outside_every_band_write_nothing() {
+fn commands_below_every_band_write_nothing() {
     let mut list = DisplayList::<Rgb888, 64, 16>::new();
     list.push(Command::Line(
         Line::new(Point::new(0, 100), Point::new(30, 120)).stroke(Rgb888::RED),

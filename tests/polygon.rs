@@ -268,7 +268,10 @@ proptest! {
         prop_assert_eq!(p.is_convex(), simple && brute::is_convex(&poly), "{:?}", poly);
     }
 
-    /// Triangulation refuses exactly the polygons that are not simple.
+    /// Triangulation refuses exactly the polygons that are not simple, and
+    /// cuts the simple ones (on a half-pixel grid: collinear vertices,
+    /// horizontal and vertical edges, ties) into at most `n - 2` triangles
+    /// that light the reference's pixels, each once.
     #[test]
     fn triangulation_needs_a_simple_polygon(poly in grid_polygon()) {
         let p = Polygon::<CAP>::new(&poly).unwrap();
@@ -276,6 +279,10 @@ proptest! {
         let r = p.triangulate(|_| calls += 1);
         if brute::is_simple(&poly) {
             prop_assert!(r.is_ok());
+            prop_assert!(calls <= poly.len() - 2, "{} triangles for {:?}", calls, poly);
+            // The grid spans -6..=6 px: the window holds it all.
+            let tri = triangulated(&poly, -8, -8, 16, 16);
+            assert_same(&tri, &reference_fill(&poly, false, -8, -8, 16, 16), &format!("{poly:?}"));
         } else {
             prop_assert_eq!((r, calls), (Err(PolygonError::NotSimple), 0));
         }

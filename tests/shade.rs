@@ -124,15 +124,22 @@ fn window(cx: i64, cy: i64, w: u32, h: u32) -> Rectangle {
 }
 
 prop_compose! {
-    /// The third vertex close to the line through the first two.
+    /// The third vertex close to the line through the first two (up to
+    /// 3000 raw units off it, one raw unit off it, or exactly on it: a
+    /// third of the cases each).
     fn sliver()(
         p0 in (-(1i64 << 30)..(1 << 30), -(1i64 << 30)..(1 << 30)),
         d in (-(1i64 << 28)..(1 << 28), -(1i64 << 28)..(1 << 28)),
         t in -2048i64..=6144,
         off in (-3000i64..=3000, -3000i64..=3000),
-        tiny in any::<bool>(),
+        kind in 0u8..3,
     ) -> Triangle {
-        let (ox, oy) = if tiny { (off.0.signum(), off.1.signum()) } else { off };
+        let (d, (ox, oy)) = match kind {
+            0 => (d, off),
+            1 => (d, (off.0.signum(), off.1.signum())),
+            // Whole pixels apart, so that `d t / 4096` is exact: collinear.
+            _ => ((d.0 / 4096 * 4096, d.1 / 4096 * 4096), (0, 0)),
+        };
         Triangle::new(
             v(p0.0, p0.1),
             v(p0.0 + d.0, p0.1 + d.1),
@@ -496,22 +503,41 @@ fn depth_and_shading_ranges() {
         assert_eq!(depth.get(0, 0), (size.height > 0).then_some(FAR));
     }
     // Slivers one raw unit wide and up to the whole range tall: per-pixel
-    // steps from 2^44 to past i64, colour and depth at their extremes.
+    // steps from 2^44 to past i64, colour and depth at their extremes. The
+    // colours and depths are the exact values', within 1.
+    let clip = Rectangle::new(Point::zero(), Size::new(8, 8));
+    let mut lit = 0;
     for height in [100i64, 1 << 15, 1 << 19, (1 << 31) - 1] {
         for (x0, x1) in [(0, 1), (2048, 2049), (4095, 4096)] {
             let t = Triangle::new(v(x0, 0), v(x1, height), v(x0, height));
+            let colors = [Rgb888::WHITE, Rgb888::BLACK, Rgb888::new(255, 0, 255)];
+            assert_blend(&t, colors, &clip).unwrap();
             let mut d = SimDisplay::new(8, 8, Rgb888::BLACK);
-            t.gouraud([Rgb888::WHITE, Rgb888::BLACK, Rgb888::new(255, 0, 255)])
-                .draw(&mut d)
-                .unwrap();
             let mut storage = [0u16; 64];
             let depth = DepthBuffer::new(&mut storage, 8);
             depth.clear();
+            let z = [0, u16::MAX - 1, 1];
             t.gouraud([Rgb888::WHITE, Rgb888::BLACK, Rgb888::RED])
-                .with_depth([0, u16::MAX - 1, 1], depth)
+                .with_depth(z, depth)
                 .draw(&mut d)
                 .unwrap();
             assert_eq!(d.out_of_bounds_writes(), 0);
+            for y in 0..8u32 {
+                for x in 0..8u32 {
+                    let stored = depth.get(x, y).unwrap();
+                    if d.write_count(Point::new(x as i32, y as i32)) == Some(1) {
+                        let e = exact(&t, z.map(i128::from), i64::from(x), i64::from(y));
+                        check_value(i128::from(stored), e).unwrap();
+                        lit += 1;
+                    } else {
+                        assert_eq!(stored, FAR, "({x}, {y}) of {t:?}");
+                    }
+                }
+            }
         }
     }
+    // The slivers whose left edge runs through the pixel centres
+    // (x0 = 2048) light that column's 8 rows in the clip, but the one 100
+    // raw units tall, which reaches no centre; the others light nothing.
+    assert_eq!(lit, 3 * 8);
 }

@@ -41,15 +41,21 @@ prop_compose! {
 
 prop_compose! {
     /// Slivers: the third vertex close to the line through the first two
-    /// (down to one raw unit off it, or exactly on it).
+    /// (up to 3000 raw units off it, one raw unit off it, or exactly on it:
+    /// a third of the cases each).
     fn sliver()(
         p0 in (-(1i64 << 22)..(1 << 22), -(1i64 << 22)..(1 << 22)),
         d in (-(1i64 << 20)..(1 << 20), -(1i64 << 20)..(1 << 20)),
         t in -2048i64..=6144,
         off in (-3000i64..=3000, -3000i64..=3000),
-        tiny in any::<bool>(),
+        kind in 0u8..3,
     ) -> Triangle {
-        let (ox, oy) = if tiny { (off.0.signum(), off.1.signum()) } else { off };
+        let (d, (ox, oy)) = match kind {
+            0 => (d, off),
+            1 => (d, (off.0.signum(), off.1.signum())),
+            // Whole pixels apart, so that `d t / 4096` is exact: collinear.
+            _ => ((d.0 / 4096 * 4096, d.1 / 4096 * 4096), (0, 0)),
+        };
         Triangle::new(
             v(p0.0, p0.1),
             v(p0.0 + d.0, p0.1 + d.1),

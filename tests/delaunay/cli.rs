@@ -51,6 +51,36 @@ fn run(points: &str, extra: &[&str]) -> (i32, String, Option<String>) {
     (code, err, std::fs::read_to_string(&output.0).ok())
 }
 
+/// The points of a point file, read here rather than by the code under
+/// test: a point a line (`x y`, decimals), blank lines and `#` comments
+/// skipped, each coordinate in raw 1/4096 px, rounded to the nearest, ties
+/// to even (the scene format's rule).
+fn points_of(text: &str) -> Vec<Pt> {
+    let raw = |s: &str| -> i64 {
+        let (neg, s) = s.strip_prefix('-').map_or((false, s), |s| (true, s));
+        let (whole, frac) = s.split_once('.').unwrap_or((s, ""));
+        let scale = 10i128.pow(frac.len() as u32);
+        let q = format!("{whole}{frac}").parse::<i128>().unwrap() * 4096;
+        let (down, rest) = (q / scale, q % scale);
+        let up = 2 * rest > scale || (2 * rest == scale && down % 2 == 1);
+        let r = (down + i128::from(up)) as i64;
+        if neg {
+            -r
+        } else {
+            r
+        }
+    };
+    text.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .map(|l| {
+            let xy: Vec<&str> = l.split_whitespace().collect();
+            assert_eq!(xy.len(), 2, "{l}");
+            (raw(xy[0]), raw(xy[1]))
+        })
+        .collect()
+}
+
 /// Triangulates a point file with the example, checks the scene's
 /// triangles with the checker and its rendering against the hull; returns
 /// the triangle count.
@@ -64,14 +94,7 @@ fn check_point_file(text: &str, size: (u32, u32)) -> usize {
         err.starts_with("delaunay: wrote ") && err.ends_with(&count),
         "{err}"
     );
-    let points: Vec<Pt> = delaunay_cli::parse_points(text)
-        .unwrap()
-        .iter()
-        .map(|v| {
-            let (x, y) = v.raw();
-            (i64::from(x), i64::from(y))
-        })
-        .collect();
+    let points = points_of(text);
     let triangles: Vec<[Pt; 3]> = scene
         .commands()
         .iter()
@@ -205,8 +228,18 @@ fn any_point_file() -> impl Strategy<Value = String> {
         .prop_map(|v| v.iter().map(|(x, y)| format!("{x} {y}\n")).collect())
 }
 
+/// A quarter of `PROPTEST_CASES` (proptest's default, 256, when unset),
+/// so that the deep run deepens this test too: each case runs the whole
+/// command line, files included.
+fn a_quarter_of_the_cases() -> u32 {
+    let cases = std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok());
+    (cases.unwrap_or(256u32) / 4).max(1)
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(ProptestConfig::with_cases(a_quarter_of_the_cases()))]
 
     #[test]
     fn any_point_file_gives_a_checked_scene(text in any_point_file()) {
