@@ -95,8 +95,10 @@ options:
 
 On a bad scene, prints `SCENE:LINE: what is wrong` on stderr, writes no
 file and exits with 1; likewise for a scene over `--max-pixels`, an output
-naming the scene file (or both outputs the same file) and a file that
-cannot be written. On a bad command line, exits with 2.
+naming the scene file (or both outputs the same file, or something other
+than a regular file: outputs are renamed into place, symbolic links
+followed) and a file that cannot be written. On a bad command line, exits
+with 2.
 ";
 
 /// What the command line asks for.
@@ -197,6 +199,17 @@ pub(super) fn run_parsed<O, W: Write>(
     }
 }
 
+/// The options that take a value (each may be given once).
+const VALUE_OPTIONS: [&str; 7] = [
+    "--algo",
+    "--bits",
+    "--max-pixels",
+    "--band",
+    "-o",
+    "--output",
+    "--counts",
+];
+
 /// `Ok(None)` for `--help`.
 fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options>, String> {
     let mut scene = None;
@@ -207,7 +220,15 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
     let mut precision = SubpixelPrecision::Bits12;
     let mut max_pixels = None;
     let mut band = None;
+    let mut given: Vec<String> = Vec::new();
     while let Some(arg) = args.next() {
+        // Every option takes one value, given once (`--stats` is a flag).
+        if let Some(name) = arg.to_str().filter(|a| VALUE_OPTIONS.contains(a)) {
+            if given.iter().any(|g| g == name) {
+                return Err(format!("`{name}` given twice"));
+            }
+            given.push(name.to_string());
+        }
         match arg.to_str() {
             Some("--algo") => {
                 let v = args.next().ok_or("`--algo` needs a name")?;
@@ -241,7 +262,10 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
                 let text = v.to_string_lossy();
                 let rows = text.parse::<u32>().ok().filter(|&n| n >= 1);
                 band = Some(rows.ok_or_else(|| {
-                    format!("`--band` must be a number of rows, 1 or more, got `{text}`")
+                    format!(
+                        "`--band` must be a number of rows from 1 to {}, got `{text}`",
+                        u32::MAX
+                    )
                 })?);
                 continue;
             }
@@ -288,7 +312,7 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
 /// Everything after the command line; the error is the one stderr line.
 fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> {
     let scene_path = options.scene.display();
-    refuse_overwriting(options)?;
+    let (output_target, counts_target) = output_targets(options)?;
     let bytes =
         std::fs::read(&options.scene).map_err(|e| format!("{scene_path}: cannot read: {e}"))?;
     let text = std::str::from_utf8(&bytes).map_err(|e| {
@@ -325,14 +349,14 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> 
         .display
         .write_png(&mut png)
         .map_err(|e| format!("{}: cannot encode PNG: {e}", options.output.display()))?;
-    let mut files = vec![(options.output.as_path(), png)];
-    if let Some(path) = &options.counts {
+    let mut files = vec![(options.output.as_path(), output_target.as_path(), png)];
+    if let (Some(path), Some(target)) = (&options.counts, &counts_target) {
         let mut pgm = Vec::new();
         rendered
             .display
             .write_counts_pgm(&mut pgm)
             .map_err(|e| format!("{}: cannot encode PGM: {e}", path.display()))?;
-        files.push((path, pgm));
+        files.push((path, target, pgm));
     }
 
     write_all_or_nothing(&files)?;
@@ -359,31 +383,72 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> 
     ))
 }
 
-/// Refuses an output that is the scene file, or two outputs that are one
-/// file, comparing canonical paths (an output that does not exist yet is
-/// its canonical directory and its name).
-fn refuse_overwriting(options: &Options) -> Result<(), String> {
+/// The files the outputs go to (`-o`'s and `--counts`'), their symbolic
+/// links followed; refuses a target that exists and is not a regular file
+/// (a device, a FIFO, a directory: renaming over it would replace it), an
+/// output that is the scene file, and two outputs that are one file,
+/// comparing canonical paths (a target that does not exist yet is its
+/// canonical directory and its name).
+fn output_targets(options: &Options) -> Result<(PathBuf, Option<PathBuf>), String> {
     let scene = std::fs::canonicalize(&options.scene).ok();
-    let output = resolve(&options.output);
-    let counts = options.counts.as_deref().map(|p| (p, resolve(p)));
-    for (path, name, resolved) in [(options.output.as_path(), "-o", &output)]
-        .into_iter()
-        .chain(counts.as_ref().map(|(p, r)| (*p, "--counts", r)))
-    {
-        if resolved.is_some() && *resolved == scene {
+    let output = output_target(&options.output, "-o")?;
+    let counts = match &options.counts {
+        Some(path) => Some(output_target(path, "--counts")?),
+        None => None,
+    };
+    for (path, name, target) in [(&options.output, "-o", Some(&output))].into_iter().chain(
+        options
+            .counts
+            .as_ref()
+            .map(|p| (p, "--counts", counts.as_ref())),
+    ) {
+        if target.is_some() && target.cloned() == scene {
             return Err(format!(
                 "{}: `{name}` names the scene file; refusing to overwrite it",
                 path.display()
             ));
         }
     }
-    match counts {
-        Some((path, resolved)) if resolved.is_some() && resolved == output => Err(format!(
+    match (&options.counts, &counts) {
+        (Some(path), Some(c)) if *c == output => Err(format!(
             "{}: `-o` and `--counts` name the same file",
             path.display()
         )),
-        _ => Ok(()),
+        _ => Ok((output, counts)),
     }
+}
+
+/// Where `path` (the option `name`'s) is written: the file its symbolic
+/// links lead to, which may not exist yet, canonical where it resolves.
+fn output_target(path: &Path, name: &str) -> Result<PathBuf, String> {
+    let mut target = path.to_path_buf();
+    // As many links as Linux follows before giving up (`ELOOP`).
+    for _ in 0..40 {
+        let Ok(meta) = std::fs::symlink_metadata(&target) else {
+            // Not there yet (or not readable: writing it will say why).
+            return Ok(resolve(&target).unwrap_or(target));
+        };
+        if meta.file_type().is_symlink() {
+            let link = std::fs::read_link(&target)
+                .map_err(|e| format!("{}: cannot read the link: {e}", path.display()))?;
+            target = match target.parent() {
+                Some(dir) => dir.join(link),
+                None => link,
+            };
+            continue;
+        }
+        if !meta.is_file() {
+            return Err(format!(
+                "{}: `{name}` names something other than a regular file; refusing to replace it",
+                path.display()
+            ));
+        }
+        return Ok(resolve(&target).unwrap_or(target));
+    }
+    Err(format!(
+        "{}: too many levels of symbolic links",
+        path.display()
+    ))
 }
 
 /// The canonical form of `path`, or of its parent joined with its name if
@@ -400,21 +465,22 @@ fn resolve(path: &Path) -> Option<PathBuf> {
     Some(std::fs::canonicalize(parent).ok()?.join(name))
 }
 
-/// Writes every file under a temporary name beside it, then renames them
-/// all into place; on any failure removes what it wrote.
-fn write_all_or_nothing(files: &[(&Path, Vec<u8>)]) -> Result<(), String> {
-    let mut temps: Vec<(PathBuf, &Path)> = Vec::new();
-    let cleanup = |temps: &[(PathBuf, &Path)]| {
-        for (temp, _) in temps {
+/// Writes every file (given as the path the user named, the file it goes
+/// to, and the bytes) under a temporary name beside its target, then
+/// renames them all into place; on any failure removes what it wrote.
+fn write_all_or_nothing(files: &[(&Path, &Path, Vec<u8>)]) -> Result<(), String> {
+    let mut temps: Vec<(PathBuf, &Path, &Path)> = Vec::new();
+    let cleanup = |temps: &[(PathBuf, &Path, &Path)]| {
+        for (temp, _, _) in temps {
             let _ = std::fs::remove_file(temp);
         }
     };
-    for (path, bytes) in files {
+    for (path, target, bytes) in files {
         let err = |e: std::io::Error| format!("{}: cannot write: {e}", path.display());
-        let temp = temp_name(path).ok_or_else(|| err(std::io::ErrorKind::InvalidInput.into()));
+        let temp = temp_name(target).ok_or_else(|| err(std::io::ErrorKind::InvalidInput.into()));
         let written = temp.and_then(|t| {
             let r = std::fs::write(&t, bytes).map_err(err);
-            temps.push((t, path));
+            temps.push((t, path, target));
             r
         });
         if let Err(e) = written {
@@ -422,11 +488,11 @@ fn write_all_or_nothing(files: &[(&Path, Vec<u8>)]) -> Result<(), String> {
             return Err(e);
         }
     }
-    for (i, (temp, path)) in temps.iter().enumerate() {
-        if let Err(e) = std::fs::rename(temp, path) {
+    for (i, (temp, path, target)) in temps.iter().enumerate() {
+        if let Err(e) = std::fs::rename(temp, target) {
             // The files already renamed hold this run's output: remove them
             // too, so that nothing of a failed run is left.
-            for (_, done) in &temps[..i] {
+            for (_, _, done) in &temps[..i] {
                 let _ = std::fs::remove_file(done);
             }
             cleanup(&temps[i..]);

@@ -252,6 +252,27 @@ fn cli_usage() {
         vec![s.as_str(), "-o", p.as_str(), "--bogus"],
         vec![s.as_str(), "-o", p.as_str(), "-o", p.as_str()],
         vec![s.as_str(), s.as_str(), "-o", p.as_str()],
+        // Every option with a value at most once, as `-o`.
+        vec![s.as_str(), "-o", p.as_str(), "--band", "4", "--band", "8"],
+        vec![s.as_str(), "--bits", "4", "-o", p.as_str(), "--bits", "4"],
+        vec![
+            s.as_str(),
+            "-o",
+            p.as_str(),
+            "--algo",
+            "walk",
+            "--algo",
+            "exact",
+        ],
+        vec![
+            s.as_str(),
+            "-o",
+            p.as_str(),
+            "--max-pixels",
+            "9",
+            "--max-pixels",
+            "9",
+        ],
     ] {
         let (code, out, err) = run(&args);
         assert_eq!(code, 2, "{args:?}");
@@ -503,11 +524,107 @@ fn band_option_errors() {
         let (code, _, err) = run(&[&scene.arg(), "-o", &png_file.arg(), "--band", bad]);
         assert_eq!(code, 2, "{bad}");
         assert!(
-            err.starts_with("render: `--band` must be a number of rows"),
+            err.starts_with("render: `--band` must be a number of rows from 1 to 4294967295, got "),
             "{err}"
         );
     }
     let (code, _, err) = run(&[&scene.arg(), "-o", &png_file.arg(), "--band"]);
     assert_eq!(code, 2);
     assert!(err.contains("`--band` needs a number of rows"), "{err}");
+}
+
+/// `render` wrote each output under a temporary name and renamed it over
+/// the path given, so a symbolic link, a FIFO or a device there (as root,
+/// `/dev/null`) was replaced by a plain file, and a link to the other
+/// output escaped the same-file check. Links are now followed, and
+/// anything but a regular file is refused.
+#[cfg(unix)]
+#[test]
+fn outputs_through_links_and_special_files() {
+    use std::os::unix::fs::symlink;
+
+    let scene = Temp::with("links.scene", SCENE);
+    // A link to a file that does not exist yet: the file is written, the
+    // link stays.
+    let (target, link) = (Temp::new("target.png"), Temp::new("link.png"));
+    symlink(&target.0, &link.0).unwrap();
+    let (code, _, err) = run(&[&scene.arg(), "-o", &link.arg()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(std::fs::symlink_metadata(&link.0)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    let (w, h, _) = decode_png(&std::fs::read(&target.0).unwrap());
+    assert_eq!((w, h), (6, 4));
+
+    // `--counts` through a link to the PNG, which does not exist yet.
+    let (png, to_png) = (Temp::new("same.png"), Temp::new("to-same.pgm"));
+    symlink(&png.0, &to_png.0).unwrap();
+    let (code, _, err) = run(&[&scene.arg(), "-o", &png.arg(), "--counts", &to_png.arg()]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        err,
+        format!("{}: `-o` and `--counts` name the same file\n", to_png.arg())
+    );
+    assert!(!png.0.exists());
+
+    // A link to the scene.
+    let to_scene = Temp::new("to-scene.png");
+    symlink(&scene.0, &to_scene.0).unwrap();
+    let (code, _, err) = run(&[&scene.arg(), "-o", &to_scene.arg()]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        err,
+        format!(
+            "{}: `-o` names the scene file; refusing to overwrite it\n",
+            to_scene.arg()
+        )
+    );
+    assert_eq!(std::fs::read_to_string(&scene.0).unwrap(), SCENE);
+
+    // A directory, and a FIFO where `mkfifo` exists: refused, left as
+    // they were, and nothing written.
+    let dir = Temp::new("dir.png");
+    std::fs::create_dir(&dir.0).unwrap();
+    let fifo = Temp::new("fifo.png");
+    let made_fifo = std::process::Command::new("mkfifo")
+        .arg(&fifo.0)
+        .status()
+        .is_ok_and(|s| s.success());
+    let pgm = Temp::new("special.pgm");
+    for (special, option) in [(&dir, "-o"), (&fifo, "--counts")] {
+        if special.0 == fifo.0 && !made_fifo {
+            continue;
+        }
+        let args = match option {
+            "-o" => [
+                scene.arg(),
+                "-o".into(),
+                special.arg(),
+                "--counts".into(),
+                pgm.arg(),
+            ],
+            _ => [
+                scene.arg(),
+                "-o".into(),
+                png.arg(),
+                "--counts".into(),
+                special.arg(),
+            ],
+        };
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let (code, _, err) = run(&args);
+        assert_eq!(code, 1, "{args:?}");
+        assert_eq!(
+            err,
+            format!(
+                "{}: `{option}` names something other than a regular file; refusing to replace it\n",
+                special.arg()
+            )
+        );
+        let kind = std::fs::symlink_metadata(&special.0).unwrap().file_type();
+        assert!(!kind.is_file(), "{args:?}");
+        assert!(!png.0.exists() && !pgm.0.exists(), "{args:?}");
+    }
+    let _ = std::fs::remove_dir(&dir.0);
 }
