@@ -679,3 +679,70 @@ fn static_framebuffers_of_the_new_formats() {
     assert_eq!(OLED.pixel(Point::new(255, 63)), Some(Gray4::BLACK));
     assert_eq!(PANEL.as_bytes().len(), 48);
 }
+
+/// `PixelFormat::fill_line` at any stride (found by a robustness audit):
+/// the byte formats walked a line by an index that overflowed `isize` at
+/// huge strides (a panic with overflow checks, a wrapped write into
+/// pixels already drawn without), took rows of `stride / B` whole pixels
+/// when `stride` is not a multiple of `B`, and dropped a whole line whose
+/// first pixel's offset overflowed. Each pixel must land at `y stride +
+/// x B`, inside its row and the buffer, or nowhere.
+#[test]
+fn lines_at_any_stride() {
+    use embedded_graphics_core::pixelcolor::{Gray8, Rgb888};
+    use embedded_raster::framebuffer::{Gray8Bytes, Rgb565Le, Rgb888Bytes};
+
+    /// The bytes expected: every pixel of `line` (within a 1000 x 1000
+    /// clip) whose bytes lie in its row and in `len`, set to `px`.
+    fn expected<const B: usize>(len: usize, stride: usize, line: Line, px: [u8; B]) -> Vec<u8> {
+        let mut want = vec![0u8; len];
+        let clip = Rectangle::new(Point::zero(), Size::new(1000, 1000));
+        for p in line.pixels(&clip).into_iter().flatten() {
+            let (x, y) = (p.x as u128, p.y as u128);
+            let at = y * stride as u128 + x * B as u128;
+            if (x + 1) * B as u128 <= stride as u128 && at + B as u128 <= len as u128 {
+                want[at as usize..at as usize + B].copy_from_slice(&px);
+            }
+        }
+        want
+    }
+    fn check<F: PixelFormat, const B: usize>(color: F::Color, px: [u8; B]) {
+        let clip = Rectangle::new(Point::zero(), Size::new(1000, 1000));
+        let lines = [
+            Line::new(Point::new(0, 0), Point::new(0, 3)),
+            Line::new(Point::new(0, 0), Point::new(5, 2)),
+            // Upwards, from far below: the last pixel is the first row's.
+            Line::new(Point::new(0, 999), Point::new(1, 0)),
+            Line::new(Point::new(7, 998), Point::new(2, 0)),
+        ];
+        // Rows of at least 8 pixels (the lines' columns are 0 to 7; a
+        // pixel past its row's end is the caller's to clip), and strides
+        // too large for an index to reach the second row.
+        let strides = [
+            8 * B,
+            8 * B + 1,
+            8 * B + 2,
+            usize::MAX / 3 + 1,
+            usize::MAX / 2,
+            isize::MAX as usize,
+            usize::MAX,
+        ];
+        for line in lines {
+            for stride in strides {
+                let mut buffer = vec![0u8; 40];
+                F::fill_line(&mut buffer, stride, line.pixels(&clip).unwrap(), color);
+                assert_eq!(
+                    buffer,
+                    expected(40, stride, line, px),
+                    "{line:?} at stride {stride}"
+                );
+            }
+        }
+    }
+    check::<Gray8Bytes, 1>(Gray8::new(7), [7]);
+    check::<Rgb565Le, 2>(
+        Rgb565::new(1, 2, 3),
+        Rgb565::new(1, 2, 3).into_storage().to_le_bytes(),
+    );
+    check::<Rgb888Bytes, 3>(Rgb888::new(4, 5, 6), [4, 5, 6]);
+}

@@ -181,7 +181,11 @@ pub trait PixelFormat {
 
     /// Sets the pixels of a 1-pixel line in `buffer`, whose rows are
     /// `stride` bytes apart; pixels outside `buffer` (negative, or past its
-    /// end at any `stride`) are ignored, without overflow.
+    /// end at any `stride`) are ignored, without overflow. Clip the line to
+    /// the rows' width first (as the [`Framebuffer`](super::Framebuffer)
+    /// does): a pixel past its row's end is ignored by the provided
+    /// implementation and the packed formats, but lands in the next row
+    /// with the byte formats, which walk the buffer by offset.
     ///
     /// The provided implementation calls [`write_pixel`](Self::write_pixel)
     /// per pixel; the built-in byte formats walk the line through the
@@ -202,9 +206,12 @@ pub trait PixelFormat {
     fn fill_line(buffer: &mut [u8], stride: usize, pixels: LinePixels, color: Self::Color) {
         for p in pixels {
             if let (Ok(x), Ok(y)) = (usize::try_from(p.x), usize::try_from(p.y)) {
+                // The row, cut at the buffer's end (a stride may be any
+                // size).
+                let len = buffer.len();
                 let row = y
                     .checked_mul(stride)
-                    .and_then(|start| buffer.get_mut(start..start.checked_add(stride)?));
+                    .and_then(|start| buffer.get_mut(start..start.saturating_add(stride).min(len)));
                 if let Some(row) = row {
                     Self::write_pixel(row, x, color);
                 }
