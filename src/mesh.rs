@@ -373,17 +373,35 @@ pub enum MeshError {
 }
 
 /// The number of vertices and triangles of [`sphere`]`(rings, segments)`:
-/// `(2 + segments (rings - 1), 2 segments (rings - 1))`.
+/// `(2 + segments (rings - 1), 2 segments (rings - 1))`, each saturating at
+/// `usize::MAX` (on 32-bit targets the largest divisions reach 2^33,
+/// far past the 65,535 vertices [`sphere`] accepts).
 ///
 /// # Examples
 ///
 /// ```
-/// assert_eq!(embedded_raster::mesh::sphere_size(8, 16), (114, 224));
+/// use embedded_raster::mesh::sphere_size;
+///
+/// assert_eq!(sphere_size(8, 16), (114, 224));
+/// // Exact where `usize` holds it, saturated where it does not.
+/// let (v, t) = sphere_size(u16::MAX, u16::MAX);
+/// assert_eq!(v as u64, (2 + 65_535 * 65_534u64).min(usize::MAX as u64));
+/// assert_eq!(t as u64, (2 * 65_535 * 65_534u64).min(usize::MAX as u64));
 /// ```
 pub const fn sphere_size(rings: u16, segments: u16) -> (usize, usize) {
-    let (r, s) = (rings as usize, segments as usize);
-    let bands = r.saturating_sub(1);
-    (2 + s * bands, 2 * s * bands)
+    // In `u64`: at most 2 * 65535 * 65534 < 2^33.
+    let bands = (rings as u64).saturating_sub(1);
+    let quads = segments as u64 * bands;
+    (saturating_usize(2 + quads), saturating_usize(2 * quads))
+}
+
+/// `n` as a `usize`, or `usize::MAX` if it does not fit.
+const fn saturating_usize(n: u64) -> usize {
+    if n > usize::MAX as u64 {
+        usize::MAX
+    } else {
+        n as usize
+    }
 }
 
 /// Builds a unit sphere (radius [`ONE`]) by latitude and longitude into

@@ -46,6 +46,18 @@ fn sphere_storage_and_divisions() {
         sphere(400, 400, &mut v, &mut t),
         Err(MeshError::BadDivisions)
     );
+    // Divisions whose counts pass 2^32 (they overflowed `usize` on 32-bit
+    // targets: the i686 run of `.ci/run` checks that case).
+    for (rings, segments) in [(40_000, 60_000), (u16::MAX, u16::MAX), (u16::MAX, 3)] {
+        assert_eq!(
+            sphere(rings, segments, &mut v, &mut t),
+            Err(MeshError::BadDivisions)
+        );
+        let quads = u64::from(segments) * (u64::from(rings) - 1);
+        let (nv, nt) = sphere_size(rings, segments);
+        assert_eq!(nv as u64, (2 + quads).min(usize::MAX as u64));
+        assert_eq!(nt as u64, (2 * quads).min(usize::MAX as u64));
+    }
     assert_eq!(
         sphere(4, 8, &mut v, &mut t),
         Err(MeshError::StorageTooSmall {
