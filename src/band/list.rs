@@ -97,7 +97,9 @@ fn stroke_margin(width: u32) -> u32 {
 
 impl<C: Copy, const P: usize> Command<'_, C, P> {
     /// The screen rows the command can write, or more: a band that does
-    /// not meet them skips the command before any setup.
+    /// not meet them skips the command before any setup. The end saturates
+    /// at `i32::MAX`, so row `i32::MAX`, which no [`Band`] reaches, is left
+    /// out.
     ///
     /// # Examples
     ///
@@ -481,7 +483,12 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
     where
         T: DrawTarget<Color = C> + SpanSink<C, Error = <T as DrawTarget>::Error>,
     {
-        self.draw_rows(target, i32::MIN..i32::MAX, depth)
+        // Every command: culling by rows could only skip the empty ones,
+        // and would skip those on row `i32::MAX`, which no `Range<i32>`
+        // of rows holds.
+        self.commands
+            .iter()
+            .try_for_each(|command| command.draw_on(target, depth))
     }
 
     /// Draws the commands whose rows meet `band`'s on it, in order, with
