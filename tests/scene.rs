@@ -202,9 +202,12 @@ fn bad_colours() {
             format!("size 8 8\nrect 0 0 1 1 {bad}"),
             format!("size 8 8\ntri 0 0 1 0 0 1 {bad}"),
         ] {
+            // Shown as in the file, but for the characters outside
+            // printable ASCII (the full-width digits), escaped.
+            let shown = bad.replace("１２３", "\\u{ff11}\\u{ff12}\\u{ff13}");
             assert_eq!(
                 error(&text),
-                err(2, &format!("bad colour `{bad}`")),
+                err(2, &format!("bad colour `{shown}`")),
                 "{text}"
             );
         }
@@ -340,6 +343,24 @@ fn comments_blanks_and_separators() {
     assert_eq!(
         error("size 4 4\nclear #fff\nfoo\n"),
         err(2, "bad colour `#fff`")
+    );
+    // Characters outside printable ASCII are shown escaped, such as a
+    // byte-order mark before the first command (which is then unknown,
+    // not a command before `size`) or a no-break space.
+    assert_eq!(
+        error("\u{feff}size 4 4\n"),
+        err(1, "unknown command `\\u{feff}size`")
+    );
+    assert_eq!(
+        error("size 4 4\nclear\u{a0}#ffffff\n"),
+        err(2, "unknown command `clear\\u{a0}#ffffff`")
+    );
+    assert_eq!(error("clear #ffffff\n"), err(1, "`size` must come first"));
+    // A long token is cut after 40 characters.
+    let long = "x".repeat(5000);
+    assert_eq!(
+        error(&format!("size 4 4\nclear #{long}\n")),
+        err(2, &format!("bad colour `#{}...`", "x".repeat(39)))
     );
 }
 

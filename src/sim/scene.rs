@@ -211,7 +211,10 @@ pub fn parse_scene(text: &str) -> Result<Scene, SceneError> {
             ("size", Some((first, _))) => {
                 return Err(err(format!("duplicate `size` (first on line {first})")))
             }
-            (_, None) => return Err(err("`size` must come first".into())),
+            (_, None) if COMMANDS.contains(&word) => {
+                return Err(err("`size` must come first".into()))
+            }
+            (_, None) => return Err(err(format!("unknown command `{}`", Shown(word)))),
             (_, Some(_)) => commands.push(parse_command(word, &args).map_err(err)?),
         }
     }
@@ -223,6 +226,9 @@ pub fn parse_scene(text: &str) -> Result<Scene, SceneError> {
         }),
     }
 }
+
+/// The drawing commands' words (those of [`parse_command`]).
+const COMMANDS: [&str; 7] = ["clear", "rect", "tri", "gtri", "line", "polyline", "poly"];
 
 /// Parses one drawing command: one match arm per command word.
 fn parse_command(word: &str, args: &[&str]) -> Result<Command, String> {
@@ -379,18 +385,29 @@ fn colour(t: &str) -> Result<Rgb888, String> {
     Ok(Rgb888::new(channel(0)?, channel(2)?, channel(4)?))
 }
 
-/// A token quoted in an error message, with control characters escaped so
-/// that the message stays on one line.
+/// A token quoted in an error message: every character but printable
+/// ASCII escaped (`\u{feff}` for a byte-order mark, `\u{a0}` for a
+/// no-break space: a scene's words are all ASCII, so these are what makes
+/// the token wrong), so that the message stays on one line and shows it,
+/// and cut after [`Shown::MAX_CHARS`] characters.
 struct Shown<'a>(&'a str);
+
+impl Shown<'_> {
+    /// The characters of a token shown before `...`.
+    const MAX_CHARS: usize = 40;
+}
 
 impl fmt::Display for Shown<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         use fmt::Write;
-        for c in self.0.chars() {
-            if c.is_control() {
-                write!(f, "{}", c.escape_default())?;
-            } else {
+        for (i, c) in self.0.chars().enumerate() {
+            if i == Self::MAX_CHARS {
+                return f.write_str("...");
+            }
+            if c.is_ascii_graphic() {
                 f.write_char(c)?;
+            } else {
+                write!(f, "{}", c.escape_default())?;
             }
         }
         Ok(())
