@@ -722,6 +722,7 @@ fn lines_at_any_stride() {
             8 * B,
             8 * B + 1,
             8 * B + 2,
+            40_000 * B,
             usize::MAX / 3 + 1,
             usize::MAX / 2,
             isize::MAX as usize,

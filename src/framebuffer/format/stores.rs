@@ -49,16 +49,22 @@ fn walk_line_by_index<const B: usize>(
 /// are inside it.
 #[inline(always)]
 fn walks_by_index<const B: usize>(stride: usize, pixels: &LinePixels) -> bool {
-    // In `i64` without overflow: a row under 2^31 cells, coordinates in
-    // `i32` and at most 2^32 pixels keep each term under 2^63.
     let first = pixels.first();
-    let Ok(row) = i32::try_from(stride / B) else {
+    let Ok(row) = u32::try_from(stride / B) else {
         return false;
     };
-    let (row, x, y) = (i64::from(row), i64::from(first.x), i64::from(first.y));
-    let start = row * y + x;
-    let reach = (row + 1) * i64::from(pixels.len());
-    stride.is_multiple_of(B) && isize::try_from(start.unsigned_abs() + reach.unsigned_abs()).is_ok()
+    let (x, y, steps) = (first.x.unsigned_abs(), first.y.unsigned_abs(), pixels.len());
+    // Every term under 2^15 (a framebuffer's lines): the index stays under
+    // 2^31, and no multiply is needed (a library call on ARMv6-M).
+    let small = |n: u32| n < 1 << 15;
+    if small(row) && small(x) && small(y) && small(steps) {
+        return stride.is_multiple_of(B);
+    }
+    // Exactly, in `u64`: the start is under 2^32 x 2^31 + 2^31.
+    let start = u64::from(row) * u64::from(y) + u64::from(x);
+    let reach = (u64::from(row) + 1).checked_mul(u64::from(steps));
+    let end = reach.and_then(|reach| start.checked_add(reach));
+    stride.is_multiple_of(B) && end.is_some_and(|n| isize::try_from(n).is_ok())
 }
 
 /// [`walk_line`] pixel by pixel, for the lines [`walks_by_index`] refuses:
