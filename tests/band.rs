@@ -6,6 +6,8 @@
 
 #[path = "common/rng.rs"]
 mod rng;
+#[path = "common/view.rs"]
+mod view;
 
 use embedded_graphics::{
     pixelcolor::{Rgb888, RgbColor},
@@ -20,6 +22,7 @@ use embedded_raster::{
 };
 use proptest::prelude::*;
 use rng::Rng;
+use view::View;
 
 const W: u32 = 37;
 const H: u32 = 29;
@@ -323,58 +326,28 @@ fn commands_below_every_band_write_nothing() {
 /// list or one by one, the same pixels are written.
 #[test]
 fn a_list_draws_on_the_last_row_of_i32() {
-    /// Counts the pixels written, at the rows' end of the plane.
-    struct Bottom(Vec<Point>);
-    impl Dimensions for Bottom {
-        fn bounding_box(&self) -> Rectangle {
-            Rectangle::new(Point::new(0, i32::MAX - 1), Size::new(4, 2))
-        }
-    }
-    impl DrawTarget for Bottom {
-        type Color = Rgb888;
-        type Error = core::convert::Infallible;
-        fn draw_iter<I: IntoIterator<Item = Pixel<Rgb888>>>(
-            &mut self,
-            pixels: I,
-        ) -> Result<(), Self::Error> {
-            let area = self.bounding_box();
-            for Pixel(p, _) in pixels {
-                assert!(area.contains(p), "{p:?} outside");
-                self.0.push(p);
-            }
-            Ok(())
-        }
-        // In `i64`: embedded-graphics' own rectangle arithmetic does not
-        // reach the last row.
-        fn fill_solid(&mut self, area: &Rectangle, _: Rgb888) -> Result<(), Self::Error> {
-            let (x0, y0) = (i64::from(area.top_left.x), i64::from(area.top_left.y));
-            for y in y0..y0 + i64::from(area.size.height) {
-                for x in x0..x0 + i64::from(area.size.width) {
-                    let p = Point::new(x as i32, y as i32);
-                    assert!(
-                        (0..4).contains(&x) && y >= i64::from(i32::MAX) - 1,
-                        "{p:?} outside"
-                    );
-                    self.0.push(p);
-                }
-            }
-            Ok(())
-        }
-    }
     let last = Point::new(1, i32::MAX);
     let line = Line::new(last, last + Point::new(2, 0)).stroke(Rgb888::RED);
     let rect = Rectangle::new(Point::new(0, i32::MAX), Size::new(1, 1));
     let mut list = DisplayList::<Rgb888, 4>::new();
     list.push(Command::Line(line)).unwrap();
     list.push(Command::Rect(rect, Rgb888::GREEN)).unwrap();
-    let mut through_list = Bottom(vec![]);
-    list.draw(&mut through_list).unwrap();
-    let mut one_by_one = Bottom(vec![]);
-    line.draw(&mut one_by_one).unwrap();
-    one_by_one.fill_solid(&rect, Rgb888::GREEN).unwrap();
-    let (mut a, mut b) = (through_list.0, one_by_one.0);
-    a.sort_by_key(|p| (p.y, p.x));
-    b.sort_by_key(|p| (p.y, p.x));
-    assert_eq!(a, b);
-    assert_eq!(a.len(), 4, "{a:?}");
+    // 4 x 2 pixels whose bottom row is row `i32::MAX`.
+    let origin = Point::new(0, i32::MAX - 1);
+    let mut through_list = SimDisplay::new(4, 2, Rgb888::BLACK);
+    list.draw(&mut View {
+        inner: &mut through_list,
+        origin,
+    })
+    .unwrap();
+    let mut one_by_one = SimDisplay::new(4, 2, Rgb888::BLACK);
+    let mut view = View {
+        inner: &mut one_by_one,
+        origin,
+    };
+    line.draw(&mut view).unwrap();
+    view.fill_solid(&rect, Rgb888::GREEN).unwrap();
+    assert_eq!(through_list.pixels(), one_by_one.pixels());
+    assert_eq!(through_list.counts(), one_by_one.counts());
+    assert_eq!(through_list.pixels_written(), 4);
 }

@@ -35,6 +35,8 @@ mod common;
 mod line_ref;
 #[path = "common/rng.rs"]
 mod rng;
+#[path = "common/view.rs"]
+mod view;
 
 use embedded_graphics_core::{
     pixelcolor::{Bgr565, BinaryColor, Gray2, Gray4, Gray8, Rgb565, Rgb666, Rgb888, RgbColor},
@@ -55,6 +57,7 @@ use embedded_raster::{
 use common::{add_spans_from, rasterized, reference_fill, reference_triangle, Grid};
 use line_ref::{ideal_minor, reference, Window};
 use rng::Rng;
+use view::View;
 
 /// Inputs per target: `FUZZ_CASES`, default 300.
 fn cases() -> u64 {
@@ -121,55 +124,6 @@ fn focus(r: &mut Rng) -> i64 {
 
 fn vertex(r: &mut Rng, fx: i64, fy: i64) -> Vertex {
     Vertex::from_raw(raw(r, fx), raw(r, fy))
-}
-
-/// A 16 x 16 `DrawTarget` seen at `origin`: pixel `origin + p` of the
-/// view is pixel `p` of `inner`, shifted in `i64`, so views sit anywhere,
-/// the ends of the `i32` range included.
-struct View<'a, D> {
-    inner: &'a mut D,
-    origin: Point,
-}
-
-impl<D: DrawTarget> View<'_, D> {
-    fn shift(&self, p: Point) -> Point {
-        let d = |a: i32, o: i32| {
-            i32::try_from(i64::from(a) - i64::from(o)).unwrap_or_else(|_| {
-                panic!(
-                    "a write at {p:?}, far outside the view at {:?}",
-                    self.origin
-                )
-            })
-        };
-        Point::new(d(p.x, self.origin.x), d(p.y, self.origin.y))
-    }
-}
-
-impl<D: DrawTarget> Dimensions for View<'_, D> {
-    fn bounding_box(&self) -> Rectangle {
-        Rectangle::new(self.origin, self.inner.bounding_box().size)
-    }
-}
-
-impl<D: DrawTarget> DrawTarget for View<'_, D> {
-    type Color = D::Color;
-    type Error = D::Error;
-
-    fn draw_iter<I: IntoIterator<Item = Pixel<D::Color>>>(
-        &mut self,
-        pixels: I,
-    ) -> Result<(), D::Error> {
-        let shifted: Vec<_> = pixels
-            .into_iter()
-            .map(|Pixel(p, c)| Pixel(self.shift(p), c))
-            .collect();
-        self.inner.draw_iter(shifted)
-    }
-
-    fn fill_solid(&mut self, area: &Rectangle, color: D::Color) -> Result<(), D::Error> {
-        let area = Rectangle::new(self.shift(area.top_left), area.size);
-        self.inner.fill_solid(&area, color)
-    }
 }
 
 /// Draws `target` on a `SimDisplay` and on a `Framebuffer` of every

@@ -24,6 +24,8 @@ use proptest::prelude::*;
 
 #[path = "common/line_ref.rs"]
 mod line_ref;
+#[path = "common/view.rs"]
+mod view;
 use line_ref::{ideal_minor, reference, Window, TIE};
 
 #[path = "line/polyline.rs"]

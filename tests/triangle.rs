@@ -215,14 +215,7 @@ fn clip_rectangles_at_the_ends_of_i32() {
     let spans = |clip: &Rectangle| {
         let mut rows = std::collections::BTreeMap::new();
         t.for_each_span(clip, |s| {
-            let (x0, y0) = (i64::from(clip.top_left.x), i64::from(clip.top_left.y));
-            let (w, h) = (i64::from(clip.size.width), i64::from(clip.size.height));
-            let (xs, xe, y) = (i64::from(s.x_start), i64::from(s.x_end), i64::from(s.y));
-            assert!(
-                x0 <= xs && xs < xe && xe <= x0 + w,
-                "{s:?} outside {clip:?}"
-            );
-            assert!(y0 <= y && y < y0 + h, "{s:?} outside {clip:?}");
+            let (y, xs, xe) = common::checked_span(clip, s);
             assert!(rows.insert(y, (xs, xe)).is_none(), "row {y} twice");
             Ok::<(), ()>(())
         })

@@ -156,6 +156,20 @@ pub fn reference_fill(
     g
 }
 
+/// The row and columns of a span in `i64`, checked: not empty, and inside
+/// `clip` (which may reach the ends of `i32`).
+pub fn checked_span(clip: &Rectangle, s: Span) -> (i64, i64, i64) {
+    let (x0, y0) = (i64::from(clip.top_left.x), i64::from(clip.top_left.y));
+    let (w, h) = (i64::from(clip.size.width), i64::from(clip.size.height));
+    let (xs, xe, y) = (i64::from(s.x_start), i64::from(s.x_end), i64::from(s.y));
+    assert!(
+        x0 <= xs && xs < xe && xe <= x0 + w,
+        "{s:?} outside {clip:?}"
+    );
+    assert!(y0 <= y && y < y0 + h, "{s:?} outside {clip:?}");
+    (y, xs, xe)
+}
+
 /// Adds one to every pixel of every span `for_each_span` yields, checking
 /// that spans are non-empty, inside the window, in row order and, within a
 /// row, left to right without overlap.

@@ -1,55 +1,10 @@
 //! Thick lines: their rectangle, shared edges, the whole range.
 
-use embedded_graphics_core::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+use embedded_graphics_core::{pixelcolor::Gray8, prelude::*};
 use embedded_raster::{sim::SimDisplay, Line};
 use proptest::prelude::*;
 
-use super::{any_line, extreme_line, p, window_on};
-
-/// A display whose top-left pixel is `origin`, anywhere in the `i32`
-/// plane: what is drawn is moved by `-origin` (in `i64`) onto the
-/// display, so a window far away is seen without moving the line.
-struct At<'a> {
-    display: &'a mut SimDisplay<Gray8>,
-    origin: Point,
-}
-
-impl At<'_> {
-    fn onto(&self, q: Point) -> Point {
-        let d = |a: i32, o: i32| {
-            i32::try_from(i64::from(a) - i64::from(o))
-                .unwrap_or_else(|_| panic!("a write at {q:?}, far outside {:?}", self.origin))
-        };
-        Point::new(d(q.x, self.origin.x), d(q.y, self.origin.y))
-    }
-}
-
-impl Dimensions for At<'_> {
-    fn bounding_box(&self) -> Rectangle {
-        Rectangle::new(self.origin, self.display.bounding_box().size)
-    }
-}
-
-impl DrawTarget for At<'_> {
-    type Color = Gray8;
-    type Error = <SimDisplay<Gray8> as DrawTarget>::Error;
-
-    fn draw_iter<I: IntoIterator<Item = Pixel<Gray8>>>(
-        &mut self,
-        pixels: I,
-    ) -> Result<(), Self::Error> {
-        let moved: Vec<_> = pixels
-            .into_iter()
-            .map(|Pixel(q, c)| Pixel(self.onto(q), c))
-            .collect();
-        self.display.draw_iter(moved)
-    }
-
-    fn fill_solid(&mut self, area: &Rectangle, color: Gray8) -> Result<(), Self::Error> {
-        let area = Rectangle::new(self.onto(area.top_left), area.size);
-        self.display.fill_solid(&area, color)
-    }
-}
+use super::{any_line, extreme_line, p, view::View, window_on};
 
 /// Draws `line` with `width` on a fresh `size x size` display.
 fn thick(line: Line, width: u32, size: u32) -> SimDisplay<Gray8> {
@@ -61,8 +16,8 @@ fn thick_at(line: Line, width: u32, size: u32, origin: Point) -> SimDisplay<Gray
     let mut d = SimDisplay::new(size, size, Gray8::BLACK);
     line.stroke(Gray8::WHITE)
         .stroke_width(width)
-        .draw(&mut At {
-            display: &mut d,
+        .draw(&mut View {
+            inner: &mut d,
             origin,
         })
         .unwrap();

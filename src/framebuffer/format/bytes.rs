@@ -9,7 +9,10 @@ use embedded_graphics_core::pixelcolor::{
 };
 
 use super::{
-    stores::{byte_span, fill_bytes, fill_rows_bytes, read_bytes, walk_line, write_bytes},
+    fill_line_by_pixels,
+    stores::{
+        byte_span, fill_bytes, fill_rows_bytes, read_bytes, walk_line, walks_by_index, write_bytes,
+    },
     PixelFormat,
 };
 use crate::line::LinePixels;
@@ -202,7 +205,13 @@ macro_rules! byte_format {
             }
 
             fn fill_line(buffer: &mut [u8], stride: usize, pixels: LinePixels, color: $color) {
-                walk_line(buffer, stride, &pixels, $encode(color));
+                // By offset where that is safe (always, for a
+                // framebuffer's own lines), else pixel by pixel.
+                if walks_by_index::<$bytes>(stride, &pixels) {
+                    walk_line(buffer, stride, &pixels, $encode(color));
+                } else {
+                    fill_line_by_pixels::<Self>(buffer, stride, pixels, color);
+                }
             }
         }
     };

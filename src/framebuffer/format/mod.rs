@@ -204,17 +204,28 @@ pub trait PixelFormat {
     /// assert_eq!(buffer, [7, 0, 0, 0, 0, 7, 7, 0, 0, 0, 0, 7]);
     /// ```
     fn fill_line(buffer: &mut [u8], stride: usize, pixels: LinePixels, color: Self::Color) {
-        for p in pixels {
-            if let (Ok(x), Ok(y)) = (usize::try_from(p.x), usize::try_from(p.y)) {
-                // The row, cut at the buffer's end (a stride may be any
-                // size).
-                let len = buffer.len();
-                let row = y
-                    .checked_mul(stride)
-                    .and_then(|start| buffer.get_mut(start..start.saturating_add(stride).min(len)));
-                if let Some(row) = row {
-                    Self::write_pixel(row, x, color);
-                }
+        fill_line_by_pixels::<Self>(buffer, stride, pixels, color);
+    }
+}
+
+/// [`PixelFormat::fill_line`] pixel by pixel, each through
+/// [`write_pixel`](PixelFormat::write_pixel) on its row cut at the
+/// buffer's end (a stride may be any size): the provided implementation,
+/// and the byte formats' for the lines they cannot walk by offset.
+pub(super) fn fill_line_by_pixels<F: PixelFormat + ?Sized>(
+    buffer: &mut [u8],
+    stride: usize,
+    pixels: LinePixels,
+    color: F::Color,
+) {
+    let len = buffer.len();
+    for p in pixels {
+        if let (Ok(x), Ok(y)) = (usize::try_from(p.x), usize::try_from(p.y)) {
+            let row = y
+                .checked_mul(stride)
+                .and_then(|start| buffer.get_mut(start..start.saturating_add(stride).min(len)));
+            if let Some(row) = row {
+                F::write_pixel(row, x, color);
             }
         }
     }

@@ -8,32 +8,17 @@ use core::ops::Range;
 use crate::line::LinePixels;
 
 /// [`PixelFormat::fill_line`](super::PixelFormat::fill_line) for `B`-byte
-/// pixels: the buffer as an array of pixels, walked by index (one pixel
-/// along the major axis, one row or pixel more along the minor axis where
-/// the line moves), one bounds-checked store per pixel; a pixel past its
-/// row's end (which a framebuffer's lines never have) lands in the next
-/// row. A line whose index could leave `isize`, or rows that are not whole
-/// pixels, go pixel by pixel instead ([`put_each_pixel`]).
-#[inline(always)]
-pub(super) fn walk_line<const B: usize>(
-    buffer: &mut [u8],
-    stride: usize,
-    pixels: &LinePixels,
-    px: [u8; B],
-) {
-    if walks_by_index::<B>(stride, pixels) {
-        walk_line_by_index(buffer, stride, pixels, px);
-    } else {
-        put_each_pixel(buffer, stride, pixels, px);
-    }
-}
-
-/// [`walk_line_as`] on this target's cells, out of line: inlined beside
-/// the test of [`walks_by_index`], the walk kept one of its steps on the
-/// stack and reloaded it every pixel (Cortex-M4, `.ci/icount`: 200 px
-/// lines 2,170 → 2,336 instructions).
+/// pixels, for the lines [`walks_by_index`] allows: the buffer as an array
+/// of pixels, walked by index (one pixel along the major axis, one row or
+/// pixel more along the minor axis where the line moves), one
+/// bounds-checked store per pixel; a pixel past its row's end (which a
+/// framebuffer's lines never have) lands in the next row.
+///
+/// Out of line: inlined beside the test of [`walks_by_index`], the walk
+/// kept one of its steps on the stack and reloaded it every pixel
+/// (Cortex-M4, `.ci/icount`: 200 px lines 2,170 → 2,336 instructions).
 #[inline(never)]
-fn walk_line_by_index<const B: usize>(
+pub(super) fn walk_line<const B: usize>(
     buffer: &mut [u8],
     stride: usize,
     pixels: &LinePixels,
@@ -48,7 +33,7 @@ fn walk_line_by_index<const B: usize>(
 /// a pixel a step). Always, for a framebuffer's own lines: their pixels
 /// are inside it.
 #[inline(always)]
-fn walks_by_index<const B: usize>(stride: usize, pixels: &LinePixels) -> bool {
+pub(super) fn walks_by_index<const B: usize>(stride: usize, pixels: &LinePixels) -> bool {
     let first = pixels.first();
     let Ok(row) = u32::try_from(stride / B) else {
         return false;
@@ -65,33 +50,6 @@ fn walks_by_index<const B: usize>(stride: usize, pixels: &LinePixels) -> bool {
     let reach = (u64::from(row) + 1).checked_mul(u64::from(steps));
     let end = reach.and_then(|reach| start.checked_add(reach));
     stride.is_multiple_of(B) && end.is_some_and(|n| isize::try_from(n).is_ok())
-}
-
-/// [`walk_line`] pixel by pixel, for the lines [`walks_by_index`] refuses:
-/// each pixel inside its row and the buffer written, the others dropped.
-#[inline(never)]
-fn put_each_pixel<const B: usize>(
-    buffer: &mut [u8],
-    stride: usize,
-    pixels: &LinePixels,
-    px: [u8; B],
-) {
-    let len = buffer.len();
-    for p in *pixels {
-        let (Ok(x), Ok(y)) = (usize::try_from(p.x), usize::try_from(p.y)) else {
-            continue;
-        };
-        // The row, cut at the buffer's end (a stride may be any size).
-        let row = y
-            .checked_mul(stride)
-            .and_then(|start| buffer.get_mut(start..start.saturating_add(stride).min(len)));
-        if let Some(cell) = row.and_then(|row| byte_span::<B>(row, x..x.saturating_add(1))) {
-            // Not `copy_from_slice`, whose length panic links `core::fmt`.
-            for (dst, src) in cell.iter_mut().zip(px) {
-                *dst = src;
-            }
-        }
-    }
 }
 
 /// [`walk_line`], with 2-byte pixels walked as `u16` cells if `halves`
