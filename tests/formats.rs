@@ -692,49 +692,67 @@ fn lines_at_any_stride() {
     use embedded_graphics_core::pixelcolor::{Gray8, Rgb888};
     use embedded_raster::framebuffer::{Gray8Bytes, Rgb565Le, Rgb888Bytes};
 
-    /// The bytes expected: every pixel of `line` (within a 1000 x 1000
-    /// clip) whose bytes lie in its row and in `len`, set to `px`.
-    fn expected<const B: usize>(len: usize, stride: usize, line: Line, px: [u8; B]) -> Vec<u8> {
+    /// The bytes expected: every pixel of `line` within `clip` whose bytes
+    /// lie in its row and in `len`, set to `px`.
+    fn expected<const B: usize>(
+        len: usize,
+        stride: usize,
+        line: Line,
+        clip: &Rectangle,
+        px: [u8; B],
+    ) -> Vec<u8> {
         let mut want = vec![0u8; len];
-        let clip = Rectangle::new(Point::zero(), Size::new(1000, 1000));
-        for p in line.pixels(&clip).into_iter().flatten() {
-            let (x, y) = (p.x as u128, p.y as u128);
-            let at = y * stride as u128 + x * B as u128;
-            if (x + 1) * B as u128 <= stride as u128 && at + B as u128 <= len as u128 {
-                want[at as usize..at as usize + B].copy_from_slice(&px);
+        let (b, stride, len) = (B as i128, stride as i128, len as i128);
+        for p in line.pixels(clip).into_iter().flatten() {
+            let (x, y) = (i128::from(p.x), i128::from(p.y));
+            let at = y * stride + x * b;
+            if x >= 0 && y >= 0 && (x + 1) * b <= stride && at + b <= len {
+                want[at as usize..(at + b) as usize].copy_from_slice(&px);
             }
         }
         want
     }
     fn check<F: PixelFormat, const B: usize>(color: F::Color, px: [u8; B]) {
-        let clip = Rectangle::new(Point::zero(), Size::new(1000, 1000));
-        let lines = [
-            Line::new(Point::new(0, 0), Point::new(0, 3)),
-            Line::new(Point::new(0, 0), Point::new(5, 2)),
+        let near = Rectangle::new(Point::zero(), Size::new(1000, 1000));
+        let around = Rectangle::new(Point::new(-500, -500), Size::new(1000, 1000));
+        let far = Rectangle::new(Point::new(-3, i32::MAX - 999), Size::new(1000, 1000));
+        let cases = [
+            (Line::new(Point::new(0, 0), Point::new(0, 3)), near),
+            (Line::new(Point::new(0, 0), Point::new(5, 2)), near),
             // Upwards, from far below: the last pixel is the first row's.
-            Line::new(Point::new(0, 999), Point::new(1, 0)),
-            Line::new(Point::new(7, 998), Point::new(2, 0)),
+            (Line::new(Point::new(0, 999), Point::new(1, 0)), near),
+            (Line::new(Point::new(7, 998), Point::new(2, 0)), near),
+            // Through the origin from negative coordinates, which are
+            // dropped.
+            (Line::new(Point::new(-3, -2), Point::new(4, 3)), around),
+            (Line::new(Point::new(-2, -5), Point::new(2, 5)), around),
+            // Far down, where an offset leaves `isize` at large strides.
+            (
+                Line::new(Point::new(0, i32::MAX - 10), Point::new(5, i32::MAX)),
+                far,
+            ),
         ];
-        // Rows of at least 8 pixels (the lines' columns are 0 to 7; a
-        // pixel past its row's end is the caller's to clip), and strides
-        // too large for an index to reach the second row.
+        // Rows of at least 8 pixels (the lines' columns reach 7; a pixel
+        // past its row's end is the caller's to clip), and strides too
+        // large for an index to reach the second row.
         let strides = [
             8 * B,
             8 * B + 1,
             8 * B + 2,
             40_000 * B,
+            (u32::MAX as usize).saturating_mul(B),
             usize::MAX / 3 + 1,
             usize::MAX / 2,
             isize::MAX as usize,
             usize::MAX,
         ];
-        for line in lines {
+        for (line, clip) in cases {
             for stride in strides {
                 let mut buffer = vec![0u8; 40];
                 F::fill_line(&mut buffer, stride, line.pixels(&clip).unwrap(), color);
                 assert_eq!(
                     buffer,
-                    expected(40, stride, line, px),
+                    expected(40, stride, line, &clip, px),
                     "{line:?} at stride {stride}"
                 );
             }

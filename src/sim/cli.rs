@@ -349,14 +349,24 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> 
         .display
         .write_png(&mut png)
         .map_err(|e| format!("{}: cannot encode PNG: {e}", options.output.display()))?;
-    let mut files = vec![(options.output.as_path(), output_target.as_path(), png)];
+    let mut files = vec![Output {
+        path: &options.output,
+        option: "-o",
+        target: &output_target,
+        bytes: png,
+    }];
     if let (Some(path), Some(target)) = (&options.counts, &counts_target) {
         let mut pgm = Vec::new();
         rendered
             .display
             .write_counts_pgm(&mut pgm)
             .map_err(|e| format!("{}: cannot encode PGM: {e}", path.display()))?;
-        files.push((path, target, pgm));
+        files.push(Output {
+            path,
+            option: "--counts",
+            target,
+            bytes: pgm,
+        });
     }
 
     write_all_or_nothing(&files)?;
@@ -420,13 +430,25 @@ fn output_targets(options: &Options) -> Result<(PathBuf, Option<PathBuf>), Strin
 
 /// Where `path` (the option `name`'s) is written: the file its symbolic
 /// links lead to, which may not exist yet, canonical where it resolves.
+/// Refuses a path (or link) ending in a separator, `.` or `..`, which can
+/// only name a directory.
 fn output_target(path: &Path, name: &str) -> Result<PathBuf, String> {
     let mut target = path.to_path_buf();
     // As many links as Linux follows before giving up (`ELOOP`).
     for _ in 0..40 {
-        let Ok(meta) = std::fs::symlink_metadata(&target) else {
-            // Not there yet (or not readable: writing it will say why).
-            return Ok(resolve(&target).unwrap_or(target));
+        if !names_a_file(&target) {
+            return Err(format!(
+                "{}: `{name}` must name a file, not end in `/`, `.` or `..`",
+                path.display()
+            ));
+        }
+        let meta = match std::fs::symlink_metadata(&target) {
+            Ok(meta) => meta,
+            // Not there yet: written where its directory resolves.
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                return Ok(resolve(&target).unwrap_or(target))
+            }
+            Err(e) => return Err(format!("{}: cannot write: {e}", path.display())),
         };
         if meta.file_type().is_symlink() {
             let link = std::fs::read_link(&target)
@@ -451,6 +473,22 @@ fn output_target(path: &Path, name: &str) -> Result<PathBuf, String> {
     ))
 }
 
+/// Whether `path` ends in a file's name: not in a separator, `.` or `..`
+/// (`Path::components` drops a trailing `/` and `/.`, so the text is
+/// read).
+fn names_a_file(path: &Path) -> bool {
+    let text = path.as_os_str().as_encoded_bytes();
+    let dot_last = |suffix: &[u8]| {
+        text.ends_with(suffix)
+            && (text.len() == suffix.len()
+                || std::path::is_separator(char::from(text[text.len() - suffix.len() - 1])))
+    };
+    let ends_in_separator = text
+        .last()
+        .is_some_and(|&b| std::path::is_separator(char::from(b)));
+    !text.is_empty() && !ends_in_separator && !dot_last(b".") && !dot_last(b"..")
+}
+
 /// The canonical form of `path`, or of its parent joined with its name if
 /// it does not exist; `None` if neither resolves.
 fn resolve(path: &Path) -> Option<PathBuf> {
@@ -465,41 +503,88 @@ fn resolve(path: &Path) -> Option<PathBuf> {
     Some(std::fs::canonicalize(parent).ok()?.join(name))
 }
 
-/// Writes every file (given as the path the user named, the file it goes
-/// to, and the bytes) under a temporary name beside its target, then
+/// One output file: the path the user named with its option, the file it
+/// goes to ([`output_target`]) and its bytes.
+struct Output<'a> {
+    path: &'a Path,
+    option: &'static str,
+    target: &'a Path,
+    bytes: Vec<u8>,
+}
+
+/// Writes every file under a new temporary name beside its target, then
 /// renames them all into place; on any failure removes what it wrote.
-fn write_all_or_nothing(files: &[(&Path, &Path, Vec<u8>)]) -> Result<(), String> {
-    let mut temps: Vec<(PathBuf, &Path, &Path)> = Vec::new();
-    let cleanup = |temps: &[(PathBuf, &Path, &Path)]| {
-        for (temp, _, _) in temps {
+/// Just before the renames, each path must still lead to its target (a
+/// link or special file put there while the scene rendered is refused).
+fn write_all_or_nothing(files: &[Output<'_>]) -> Result<(), String> {
+    let mut temps: Vec<PathBuf> = Vec::new();
+    let cleanup = |temps: &[PathBuf]| {
+        for temp in temps {
             let _ = std::fs::remove_file(temp);
         }
     };
-    for (path, target, bytes) in files {
-        let err = |e: std::io::Error| format!("{}: cannot write: {e}", path.display());
-        let temp = temp_name(target).ok_or_else(|| err(std::io::ErrorKind::InvalidInput.into()));
-        let written = temp.and_then(|t| {
-            let r = std::fs::write(&t, bytes).map_err(err);
-            temps.push((t, path, target));
-            r
-        });
-        if let Err(e) = written {
-            cleanup(&temps);
-            return Err(e);
+    for file in files {
+        match write_new_temp(file.target, &file.bytes) {
+            Ok(temp) => temps.push(temp),
+            Err(e) => {
+                cleanup(&temps);
+                return Err(format!("{}: cannot write: {e}", file.path.display()));
+            }
         }
     }
-    for (i, (temp, path, target)) in temps.iter().enumerate() {
-        if let Err(e) = std::fs::rename(temp, target) {
+    for file in files {
+        match output_target(file.path, file.option) {
+            Ok(target) if target == file.target => {}
+            Ok(_) => {
+                cleanup(&temps);
+                return Err(format!("{}: changed while rendering", file.path.display()));
+            }
+            Err(e) => {
+                cleanup(&temps);
+                return Err(e);
+            }
+        }
+    }
+    for (i, (temp, file)) in temps.iter().zip(files).enumerate() {
+        if let Err(e) = std::fs::rename(temp, file.target) {
             // The files already renamed hold this run's output: remove them
             // too, so that nothing of a failed run is left.
-            for (_, _, done) in &temps[..i] {
-                let _ = std::fs::remove_file(done);
+            for done in &files[..i] {
+                let _ = std::fs::remove_file(done.target);
             }
             cleanup(&temps[i..]);
-            return Err(format!("{}: cannot write: {e}", path.display()));
+            return Err(format!("{}: cannot write: {e}", file.path.display()));
         }
     }
     Ok(())
+}
+
+/// Writes `bytes` to a file of a new name beside `target` ([`temp_name`]),
+/// created only if no file (or link) has that name: one that exists is
+/// never followed, truncated or removed.
+fn write_new_temp(target: &Path, bytes: &[u8]) -> std::io::Result<PathBuf> {
+    for _ in 0..100 {
+        let temp = temp_name(target).ok_or(std::io::ErrorKind::InvalidInput)?;
+        let created = std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&temp);
+        match created {
+            Ok(mut file) => {
+                return match file.write_all(bytes) {
+                    Ok(()) => Ok(temp),
+                    Err(e) => {
+                        drop(file);
+                        let _ = std::fs::remove_file(&temp);
+                        Err(e)
+                    }
+                };
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(e),
+        }
+    }
+    Err(std::io::ErrorKind::AlreadyExists.into())
 }
 
 /// `DIR/.NAME.render-PID-N.tmp` for `DIR/NAME`, `N` counting the calls in

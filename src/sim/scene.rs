@@ -386,7 +386,7 @@ fn colour(t: &str) -> Result<Rgb888, String> {
 }
 
 /// A token quoted in an error message: every character but printable
-/// ASCII escaped (`\u{feff}` for a byte-order mark, `\u{a0}` for a
+/// ASCII, and the backslash, escaped (`\u{feff}` for a byte-order mark, `\u{a0}` for a
 /// no-break space: a scene's words are all ASCII, so these are what makes
 /// the token wrong), so that the message stays on one line and shows it,
 /// and cut after [`Shown::MAX_CHARS`] characters.
@@ -404,12 +404,31 @@ impl fmt::Display for Shown<'_> {
             if i == Self::MAX_CHARS {
                 return f.write_str("...");
             }
-            if c.is_ascii_graphic() {
+            // A backslash escaped too, so that `\u{a0}` in the file reads
+            // apart from a no-break space.
+            if c.is_ascii_graphic() && c != '\\' {
                 f.write_char(c)?;
             } else {
                 write!(f, "{}", c.escape_default())?;
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `COMMANDS` lists exactly the words `parse_command` knows.
+    #[test]
+    fn commands_are_the_parsed_words() {
+        for word in COMMANDS {
+            let e = parse_command(word, &[]).unwrap_err();
+            assert!(!e.starts_with("unknown command"), "{word}: {e}");
+        }
+        assert!(parse_command("circle", &[])
+            .unwrap_err()
+            .starts_with("unknown command"));
     }
 }

@@ -627,4 +627,68 @@ fn outputs_through_links_and_special_files() {
         assert!(!png.0.exists() && !pgm.0.exists(), "{args:?}");
     }
     let _ = std::fs::remove_dir(&dir.0);
+
+    // A relative link, through a chain of two: the file it names, beside
+    // the links, is written.
+    let (file, first, second) = (
+        Temp::new("chained.png"),
+        Temp::new("first.png"),
+        Temp::new("second.png"),
+    );
+    symlink(file.0.file_name().unwrap(), &first.0).unwrap();
+    symlink(first.0.file_name().unwrap(), &second.0).unwrap();
+    let (code, _, err) = run(&[&scene.arg(), "-o", &second.arg()]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(decode_png(&std::fs::read(&file.0).unwrap()).0, 6);
+    assert!(std::fs::symlink_metadata(&second.0)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+
+    // Paths that can only name a directory, even where a file of that
+    // name exists (the review of the change above found `FILE/` written
+    // over `FILE`): refused, the file left as it was.
+    let existing = Temp::with("existing.png", "keep");
+    for bad in [
+        format!("{}/", existing.arg()),
+        format!("{}/.", existing.arg()),
+        format!("{}/..", existing.arg()),
+        format!("{}/", link.arg()),
+    ] {
+        let (code, _, err) = run(&[&scene.arg(), "-o", &bad]);
+        assert_eq!(code, 1, "{bad}");
+        assert_eq!(
+            err,
+            format!("{bad}: `-o` must name a file, not end in `/`, `.` or `..`\n")
+        );
+        assert_eq!(std::fs::read_to_string(&existing.0).unwrap(), "keep");
+        assert!(std::fs::symlink_metadata(&link.0)
+            .unwrap()
+            .file_type()
+            .is_symlink());
+    }
+
+    // No temporary file is left by any of the runs above.
+    let ours = format!(".render-{}-", std::process::id());
+    let dir = std::env::temp_dir();
+    let left: Vec<_> = entries_with(&dir, &ours)
+        .into_iter()
+        .filter(|n| {
+            // This test's outputs only: other tests render in parallel.
+            let names = [
+                "target.png",
+                "link.png",
+                "same.png",
+                "to-same.pgm",
+                "to-scene.png",
+                "dir.png",
+                "fifo.png",
+                "special.pgm",
+                "chained.png",
+                "existing.png",
+            ];
+            names.iter().any(|k| n.contains(&format!("-{k}.render-")))
+        })
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
 }

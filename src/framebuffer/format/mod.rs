@@ -185,7 +185,8 @@ pub trait PixelFormat {
     /// the rows' width first (as the [`Framebuffer`](super::Framebuffer)
     /// does): a pixel past its row's end is ignored by the provided
     /// implementation and the packed formats, but lands in the next row
-    /// with the byte formats, which walk the buffer by offset.
+    /// (and one at a negative `x` at the end of the row before) with the
+    /// byte formats, which walk the buffer by offset.
     ///
     /// The provided implementation calls [`write_pixel`](Self::write_pixel)
     /// per pixel; the built-in byte formats walk the line through the

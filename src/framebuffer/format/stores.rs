@@ -40,9 +40,10 @@ pub(super) fn walks_by_index<const B: usize>(stride: usize, pixels: &LinePixels)
     };
     let (x, y, steps) = (first.x.unsigned_abs(), first.y.unsigned_abs(), pixels.len());
     // Every term under 2^15 (a framebuffer's lines): the index stays under
-    // 2^31, and no multiply is needed (a library call on ARMv6-M).
+    // 2^31 - 2^16, and no multiply is needed (a library call on ARMv6-M).
+    // Not on 16-bit targets, whose `isize` is smaller.
     let small = |n: u32| n < 1 << 15;
-    if small(row) && small(x) && small(y) && small(steps) {
+    if usize::BITS >= 32 && small(row) && small(x) && small(y) && small(steps) {
         return stride.is_multiple_of(B);
     }
     // Exactly, in `u64`: the start is under 2^32 x 2^31 + 2^31.
