@@ -660,3 +660,88 @@ fn issue_12_line_pixels_ending_at_i32_min() {
         assert_eq!(line.pixels(&clip).unwrap().take(3).count(), 1);
     }
 }
+
+proptest! {
+    /// `LinePixels` partly or wholly iterated, then handed on: every way
+    /// of drawing it lights exactly the reference's pixels left, those
+    /// past the `k` of lowest major coordinate (the iterator's order),
+    /// and an exhausted one lights nothing. Short lines around a 32 x 24
+    /// window, a third of them axis-aligned (one run).
+    #[test]
+    fn partly_iterated_lines_draw_the_rest(
+        c in prop::array::uniform4(-40i64..=72),
+        axis in 0u8..3,
+        k in 0usize..=120,
+    ) {
+        use embedded_graphics_core::pixelcolor::{BinaryColor, Rgb565};
+        use embedded_raster::{
+            framebuffer::{buffer_size, BinaryMsb, Gray8Bytes, PixelFormat, Rgb565Le},
+            DrawTargetSink, Framebuffer, SpanSink,
+        };
+        let (a, mut b) = (p(c[0], c[1]), p(c[2], c[3]));
+        match axis {
+            0 => b.y = a.y,
+            1 => b.x = a.x,
+            _ => {}
+        }
+        let win = Window { x0: 0, y0: 0, w: 32, h: 24 };
+        let x_major = (b.x - a.x).abs() >= (b.y - a.y).abs();
+        let mut want = reference(a, b, win);
+        want.sort_by_key(|&(x, y)| if x_major { x } else { y });
+        let want: Vec<(i64, i64)> = want.into_iter().skip(k).collect();
+        let mut sorted = want.clone();
+        sorted.sort_by_key(|&(x, y)| (y, x));
+
+        let Some(mut pixels) = Line::new(a, b).pixels(&win.rect()) else {
+            prop_assert!(want.is_empty());
+            return Ok(());
+        };
+        for _ in 0..k {
+            pixels.next();
+        }
+        prop_assert_eq!(pixels.len() as usize, want.len());
+        prop_assert_eq!(pixels.is_empty(), want.is_empty());
+        let rest: Vec<(i64, i64)> = pixels.map(|q| (i64::from(q.x), i64::from(q.y))).collect();
+        prop_assert_eq!(&rest, &want, "iterated on");
+        let mut runs = vec![];
+        let listed = pixels.for_each_run(|r: Run| {
+            if r.len > 32 {
+                return Err(r);
+            }
+            for i in 0..i64::from(r.len) {
+                let (x, y) = (i64::from(r.start.x), i64::from(r.start.y));
+                runs.push(if r.vertical { (x, y + i) } else { (x + i, y) });
+            }
+            Ok(())
+        });
+        prop_assert_eq!(listed, Ok(()), "a run longer than the window");
+        prop_assert_eq!(&runs, &want, "as runs");
+
+        let lit = |on: &dyn Fn(i64, i64) -> bool| -> Vec<(i64, i64)> {
+            (0..24).flat_map(|y| (0..32).map(move |x| (x, y))).filter(|&(x, y)| on(x, y)).collect()
+        };
+        let at = |x: i64, y: i64| Point::new(x as i32, y as i32);
+
+        let mut gray = Framebuffer::<Gray8Bytes, 32, 24, { buffer_size::<Gray8Bytes>(32, 24) }>::new();
+        gray.fill_line(pixels, Gray8::WHITE).unwrap();
+        prop_assert_eq!(lit(&|x, y| gray.pixel(at(x, y)) == Some(Gray8::WHITE)), sorted.clone(), "Gray8Bytes framebuffer");
+
+        let mut rgb = Framebuffer::<Rgb565Le, 32, 24, { buffer_size::<Rgb565Le>(32, 24) }>::new();
+        rgb.fill_line(pixels, Rgb565::new(3, 9, 27)).unwrap();
+        prop_assert_eq!(lit(&|x, y| rgb.pixel(at(x, y)) == Some(Rgb565::new(3, 9, 27))), sorted.clone(), "Rgb565Le framebuffer");
+
+        let mut bits = Framebuffer::<BinaryMsb, 32, 24, { buffer_size::<BinaryMsb>(32, 24) }>::new();
+        bits.fill_line(pixels, BinaryColor::On).unwrap();
+        prop_assert_eq!(lit(&|x, y| bits.pixel(at(x, y)) == Some(BinaryColor::On)), sorted.clone(), "BinaryMsb framebuffer");
+
+        // Rows padded to 37 bytes: walked through the bytes, not as runs.
+        let mut padded = [0u8; 37 * 24];
+        Gray8Bytes::fill_line(&mut padded, 37, pixels, Gray8::WHITE);
+        prop_assert_eq!(lit(&|x, y| padded[(y * 37 + x) as usize] == 255), sorted.clone(), "a padded buffer");
+        prop_assert!((0..24).all(|y| padded[y * 37 + 32..y * 37 + 37].iter().all(|&v| v == 0)));
+
+        let mut display = SimDisplay::new(32, 24, Gray8::BLACK);
+        DrawTargetSink::new(&mut display).fill_line(pixels, Gray8::WHITE).unwrap();
+        prop_assert_eq!(lit(&|x, y| display.pixel(at(x, y)) == Some(Gray8::WHITE)), sorted, "a DrawTarget");
+    }
+}

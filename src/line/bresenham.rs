@@ -21,6 +21,10 @@ pub(crate) fn runs<E>(
     p: &LinePixels,
     emit: &mut impl FnMut(Run) -> Result<(), E>,
 ) -> Result<(), E> {
+    // Iterated to its end: no run (the steps below start at a pixel).
+    if p.is_empty() {
+        return Ok(());
+    }
     match (p.x_major, p.dmajor < 1 << 30) {
         (true, true) => step::<i32, true, E>(p, emit),
         (true, false) => step::<i64, true, E>(p, emit),
@@ -239,9 +243,12 @@ impl LinePixels {
     /// by `minor` more where the line moves along its minor axis, starting
     /// at `first`, calling `plot` with each index: for sinks that address
     /// their memory themselves. The decision variable is kept in the
-    /// narrowest width that holds it.
+    /// narrowest width that holds it. At least one pixel must be left: the
+    /// first is plotted unconditionally (checked where the walk is chosen,
+    /// in `walks_by_index`, which keeps this loop as tight as it was).
     #[inline(always)]
     pub(crate) fn walk(&self, first: isize, major: isize, minor: isize, plot: impl FnMut(isize)) {
+        debug_assert!(!self.is_empty());
         if self.dmajor < 1 << 30 {
             self.walk_in::<i32>(first, major, minor, plot);
         } else {

@@ -15,6 +15,7 @@ use embedded_graphics_core::{
 };
 
 use crate::{
+    clip::Bounds,
     line::{fill_run, LinePixels},
     span::Span,
 };
@@ -138,24 +139,13 @@ pub trait SpanSink<C> {
 
     /// Sets `len` pixels from `top` downwards to `color` (a run of a steep
     /// line). The provided implementation calls
-    /// [`fill_span`](Self::fill_span) per pixel.
+    /// [`fill_span`](Self::fill_span) per pixel inside
+    /// [`bounds`](Self::bounds).
     fn fill_column(&mut self, top: Point, len: u32, color: C) -> Result<(), Self::Error>
     where
         C: Copy,
     {
-        let mut y = top.y;
-        for _ in 0..len {
-            self.fill_span(
-                Span {
-                    y,
-                    x_start: top.x,
-                    x_end: top.x.saturating_add(1),
-                },
-                color,
-            )?;
-            y = y.saturating_add(1);
-        }
-        Ok(())
+        fill_rows(self, &Rectangle::new(top, Size::new(1, len)), color)
     }
 
     /// Sets the pixels of a 1-pixel line to `color`. The provided
@@ -170,20 +160,45 @@ pub trait SpanSink<C> {
     }
 
     /// Sets every pixel of `area` to `color`. The provided implementation
-    /// calls [`fill_span`](Self::fill_span) per row.
+    /// calls [`fill_span`](Self::fill_span) per row inside
+    /// [`bounds`](Self::bounds).
     fn fill_rect(&mut self, area: &Rectangle, color: C) -> Result<(), Self::Error>
     where
         C: Copy,
     {
-        let x_start = area.top_left.x;
-        let x_end = x_start.saturating_add_unsigned(area.size.width);
-        let mut y = area.top_left.y;
-        for _ in 0..area.size.height {
-            self.fill_span(Span { y, x_start, x_end }, color)?;
-            y = y.saturating_add(1);
-        }
-        Ok(())
+        fill_rows(self, area, color)
     }
+}
+
+/// The provided [`SpanSink::fill_column`] and [`SpanSink::fill_rect`]: a
+/// span per row of the part of `area` inside the sink's bounds, so that
+/// an area a caller failed to clip costs only its visible rows (a column
+/// `u32::MAX` pixels long was that many calls). A span cannot end past
+/// `i32::MAX`, so the last column of the `i32` range is left out, as a
+/// span would leave it.
+fn fill_rows<C: Copy, S: SpanSink<C> + ?Sized>(
+    sink: &mut S,
+    area: &Rectangle,
+    color: C,
+) -> Result<(), S::Error> {
+    let Some(b) = Bounds::of(area).intersect(Bounds::of(&sink.bounds())) else {
+        return Ok(());
+    };
+    // Inside `bounds`: x0 and y0 fit `i32`; x1, a span's exclusive end,
+    // is clamped to i32::MAX; and no row lies past i32::MAX.
+    let narrow = |v: i64| i32::try_from(v).unwrap_or(i32::MAX);
+    let (x_start, x_end) = (narrow(b.x0), narrow(b.x1));
+    if x_start == x_end {
+        // Only column i32::MAX: no span holds it.
+        return Ok(());
+    }
+    for y in b.y0..b.y1 {
+        let Ok(y) = i32::try_from(y) else {
+            break;
+        };
+        sink.fill_span(Span { y, x_start, x_end }, color)?;
+    }
+    Ok(())
 }
 
 /// A shape that rasterizes into any [`SpanSink`]: each of the crate's

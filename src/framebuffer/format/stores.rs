@@ -30,8 +30,9 @@ pub(super) fn walk_line<const B: usize>(
 /// Whether [`walk_line_as`] can walk `pixels` by index: rows of whole
 /// pixels (`stride` a multiple of `B`), and an index that cannot leave
 /// `isize` (it starts at the first pixel's and moves by at most a row and
-/// a pixel a step). Always, for a framebuffer's own lines: their pixels
-/// are inside it.
+/// a pixel a step), for a line with a pixel left (one iterated to its
+/// end has none to walk). Always, for a framebuffer's own lines: their
+/// pixels are inside it.
 #[inline(always)]
 pub(super) fn walks_by_index<const B: usize>(stride: usize, pixels: &LinePixels) -> bool {
     let first = pixels.first();
@@ -43,6 +44,9 @@ pub(super) fn walks_by_index<const B: usize>(stride: usize, pixels: &LinePixels)
     // 2^31 - 2^16, and no multiply is needed (a library call on ARMv6-M).
     // Not on 16-bit targets, whose `isize` is smaller.
     let small = |n: u32| n < 1 << 15;
+    if steps == 0 {
+        return false;
+    }
     if usize::BITS >= 32 && small(row) && small(x) && small(y) && small(steps) {
         return stride.is_multiple_of(B);
     }
