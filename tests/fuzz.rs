@@ -420,6 +420,28 @@ fn fuzz_lines_and_polylines() {
             }
             assert_same(&listed, &lit, &line);
             exact += 1;
+            // Partly iterated, or past its end: its runs are the pixels
+            // left to iterate.
+            if let Some(mut pixels) = line.pixels(&clip) {
+                for _ in 0..r.below(20) {
+                    pixels.next();
+                }
+                let mut runs = vec![];
+                pixels
+                    .for_each_run(|run| {
+                        assert!(run.len <= 16, "{run:?} of {line:?}");
+                        for i in 0..run.len as i32 {
+                            let (x, y) = (run.start.x, run.start.y);
+                            runs.push(match run.vertical {
+                                true => Point::new(x, y + i),
+                                false => Point::new(x + i, y),
+                            });
+                        }
+                        Ok::<(), ()>(())
+                    })
+                    .unwrap();
+                assert_eq!(runs, pixels.collect::<Vec<_>>(), "{line:?}");
+            }
         }
         let len = 2 + r.below(5) as usize;
         let points: Vec<Point> = (0..len).map(|_| point(&mut r)).collect();
