@@ -20,7 +20,12 @@
 //!    span sink: its pieces written whole, overlapping;
 //! 8. the same polyline through `draw` (the framebuffer as a
 //!    `DrawTarget`): each pixel once, its pieces walked in masked tiles;
-//! 9. the same 20 segments drawn as separate thick lines.
+//! 9. the same 20 segments drawn as separate thick lines;
+//! 10. the built-in scene (`builtin_scene::for_each_command`) from a
+//!     display list, drawn whole into the framebuffer, as `.ci/icount`'s
+//!     "whole frame" row;
+//! 11. the same list rendered in bands of 16 rows, as its "bands of 16"
+//!     row: where the bands' extra instructions go.
 //!
 //! Built for the host, it does nothing.
 
@@ -40,8 +45,13 @@ mod target {
 
     use cortex_m_rt::entry;
     use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+    use embedded_graphics_core::primitives::Rectangle;
     use embedded_graphics_core::{geometry::Point, Drawable};
-    use embedded_raster::{Join, Line, Polyline, Span, SpanDrawable, Triangle};
+    use embedded_raster::{
+        band::DisplayList,
+        framebuffer::{buffer_size, Rgb565Le},
+        Framebuffer, Join, Line, Polyline, Span, SpanDrawable, Triangle,
+    };
 
     use super::builtin_scene::{irregular, SceneBuffer, SCREEN};
 
@@ -66,9 +76,18 @@ mod target {
         end();
     }
 
+    /// The built-in scene's display list, as `.ci/icount` builds it.
+    type SceneList<'a> = DisplayList<'a, Rgb565, 288, 12>;
+
+    /// A band of 16 rows of the screen.
+    type Band16 = Framebuffer<Rgb565Le, 320, 16, { buffer_size::<Rgb565Le>(320, 16) }>;
+
     #[entry]
     fn main() -> ! {
         static mut FB: SceneBuffer = SceneBuffer::new();
+        static mut LIST: Option<SceneList<'static>> = None;
+        static mut SHAPES: Option<super::builtin_scene::SceneShapes> = None;
+        static mut BAND16: Band16 = Band16::new();
         let small = irregular(32, 48, 16);
         begin();
         let first = |_: Span| Err(());
@@ -124,6 +143,20 @@ mod target {
         for line in black_box(&lines) {
             let Ok(()) = black_box(line).draw_spans(black_box(FB));
         }
+        end();
+        let shapes: &'static _ = SHAPES.insert(super::builtin_scene::SceneShapes::new());
+        let list = LIST.insert(SceneList::new());
+        if super::builtin_scene::for_each_command(shapes, |c| list.push(c)).is_err() {
+            panic!("the scene does not fit the list");
+        }
+        let list = &*list;
+        begin();
+        let Ok(()) = black_box(list).draw_with_depth(black_box(&mut *FB), None);
+        end();
+        let buffers = core::slice::from_mut(BAND16);
+        let mut nowhere = |_: &Band16, _: Rectangle| Ok::<(), ()>(());
+        begin();
+        let _ = black_box(list).render_bands(240, &mut *buffers, None, &mut nowhere);
         end();
         super::semihosting::exit_success()
     }
