@@ -351,3 +351,111 @@ fn a_list_draws_on_the_last_row_of_i32() {
     assert_eq!(through_list.counts(), one_by_one.counts());
     assert_eq!(through_list.pixels_written(), 4);
 }
+
+proptest! {
+    /// `Band`'s `SpanSink::fill_line` given pixels listed in a clip wider
+    /// than the band (the screen, or the screen grown by up to 8 px), as a
+    /// caller who did not clip to the band would pass, partly iterated:
+    /// the target gets exactly the pixels left in the band's rows (its
+    /// limit included), moved up by `top`, and no other.
+    #[test]
+    fn band_lines_keep_to_the_band_rows(
+        c in prop::array::uniform4(-12i32..24),
+        grow in 0i32..=8,
+        k in 0usize..4,
+        top in -3i32..14,
+        limit in 0u32..=5,
+    ) {
+        use embedded_graphics::pixelcolor::Gray8;
+        use embedded_raster::{
+            band::Band,
+            framebuffer::{buffer_size, Gray8Bytes},
+            Framebuffer, SpanSink,
+        };
+        let clip = Rectangle::new(
+            Point::new(-grow, -grow),
+            Size::new(8 + 2 * grow as u32, 12 + 2 * grow as u32),
+        );
+        let Some(mut pixels) = Line::new(Point::new(c[0], c[1]), Point::new(c[2], c[3])).pixels(&clip)
+        else {
+            return Ok(());
+        };
+        for _ in 0..k {
+            pixels.next();
+        }
+        let mut fb = Framebuffer::<Gray8Bytes, 8, 4, { buffer_size::<Gray8Bytes>(8, 4) }>::new();
+        Band::new(&mut fb, top).limited_to(limit).fill_line(pixels, Gray8::WHITE).unwrap();
+        let rows = top..top + limit.min(4) as i32;
+        let mut want = [0u8; 32];
+        for p in pixels {
+            if rows.contains(&p.y) && (0..8).contains(&p.x) {
+                want[((p.y - top) * 8 + p.x) as usize] = 255;
+            }
+        }
+        prop_assert_eq!(fb.as_bytes(), &want[..], "rows {:?}", rows);
+    }
+}
+
+/// A band whose buffer has more rows than the screen has left before
+/// `i32::MAX` covers only those (`rows` ends there): a span on row
+/// `i32::MAX` and a clear write no buffer row past them.
+#[test]
+fn a_band_at_the_end_of_i32_has_only_the_rows_before_it() {
+    use embedded_graphics::pixelcolor::Gray8;
+    use embedded_raster::{
+        band::Band,
+        framebuffer::{buffer_size, Gray8Bytes},
+        Framebuffer, Span, SpanSink,
+    };
+    let mut fb = Framebuffer::<Gray8Bytes, 8, 4, { buffer_size::<Gray8Bytes>(8, 4) }>::new();
+    let mut band = Band::new(&mut fb, i32::MAX - 1);
+    assert_eq!(band.rows(), i32::MAX - 1..i32::MAX);
+    assert_eq!(band.bounding_box().size, Size::new(8, 1));
+    let span = Span {
+        y: i32::MAX,
+        x_start: 0,
+        x_end: 8,
+    };
+    band.fill_span(span, Gray8::WHITE).unwrap();
+    assert!(fb.as_bytes().iter().all(|&b| b == 0), "row i32::MAX drawn");
+    let mut band = Band::new(&mut fb, i32::MAX - 1);
+    band.clear(Gray8::WHITE).unwrap();
+    let (first, rest) = fb.as_bytes().split_at(8);
+    assert!(first.iter().all(|&b| b == 255));
+    assert!(rest.iter().all(|&b| b == 0), "rows below the band cleared");
+}
+
+/// A screen with rows and no buffer, or a buffer without rows, is an
+/// error before anything is drawn or sent; a screen without rows needs
+/// no buffer.
+#[test]
+fn buffers_without_rows_are_an_error() {
+    use embedded_graphics::pixelcolor::Gray8;
+    use embedded_raster::band::RenderError;
+    let mut calls = 0;
+    let mut sent = 0;
+    let mut run = |height: u32, buffers: &mut [SimDisplay<Gray8>]| {
+        render_in_bands(
+            height,
+            buffers,
+            None,
+            |band, _| {
+                calls += 1;
+                band.clear(Gray8::WHITE)
+            },
+            &mut |_: &SimDisplay<Gray8>, _: Rectangle| {
+                sent += 1;
+                Ok::<(), core::convert::Infallible>(())
+            },
+        )
+    };
+    let later_empty = &mut [
+        SimDisplay::new(4, 2, Gray8::BLACK),
+        SimDisplay::new(4, 0, Gray8::BLACK),
+    ];
+    assert_eq!(run(8, later_empty), Err(RenderError::NoRows));
+    assert_eq!(run(8, &mut []), Err(RenderError::NoRows));
+    assert_eq!(run(0, &mut []), Ok(()));
+    assert_eq!(run(8, &mut [SimDisplay::new(4, 3, Gray8::BLACK)]), Ok(()));
+    assert_eq!((calls, sent), (3, 3), "bands drawn and sent");
+}

@@ -293,6 +293,14 @@ enum Op<C> {
     /// `SpanSink::fill_span`, with any coordinates (a span outside the
     /// sink's contract is dropped whole).
     Span(Span, C),
+    /// `SpanSink::fill_column`, with any coordinates: clipped.
+    Column(Point, u32, C),
+    /// `SpanSink::fill_line` with the pixels of a line listed in a clip
+    /// (the framebuffer's bounds, or those grown by up to 8 px on each
+    /// side, as a caller who did not clip would pass), after the first
+    /// few have been iterated: the pixels left inside are drawn, no
+    /// other (padding included).
+    Line(Point, Point, Rectangle, usize, C),
 }
 
 /// A span coordinate for a framebuffer `limit` pixels long: mostly near
@@ -359,7 +367,21 @@ fn arb_op<F: Spec>(w: usize, h: usize) -> impl Strategy<Value = Op<F::Color>> {
         1 => color().prop_map(Op::Clear),
         3 => (span_coordinate(h), span_coordinate(w), span_coordinate(w), color())
             .prop_map(|(y, x_start, x_end, c)| Op::Span(Span { y, x_start, x_end }, c)),
+        2 => (arb_point(w, h), prop_oneof![0..h as u32 + 4, any::<u32>()], color())
+            .prop_map(|(top, len, c)| Op::Column(top, len, c)),
+        3 => (arb_point(w, h), arb_point(w, h), 0usize..4, color()).prop_map(move |(a, b, k, c)| {
+            Op::Line(a, b, Rectangle::new(Point::zero(), Size::new(w as u32, h as u32)), k, c)
+        }),
+        3 => (near(w, h), near(w, h), 0i32..=8, 0usize..4, color()).prop_map(move |(a, b, g, k, c)| {
+            let grown = Size::new(w as u32 + 2 * g as u32, h as u32 + 2 * g as u32);
+            Op::Line(a, b, Rectangle::new(Point::new(-g, -g), grown), k, c)
+        }),
     ]
+}
+
+/// A point within 12 px of a `w` x `h` framebuffer.
+fn near(w: usize, h: usize) -> impl Strategy<Value = Point> {
+    (-12..w as i32 + 12, -12..h as i32 + 12).prop_map(|(x, y)| Point::new(x, y))
 }
 
 /// Applies `ops` to a framebuffer and to the model, comparing bytes, every
@@ -432,6 +454,26 @@ fn run<F: Spec, const W: usize, const H: usize, const N: usize>(
                     for x in x0..x1 {
                         model.set(x, y, *c);
                     }
+                }
+            }
+            Op::Column(top, len, c) => {
+                fb.fill_column(*top, *len, *c).unwrap();
+                let (x, y) = (i64::from(top.x), i64::from(top.y));
+                // Only the rows that can hold a pixel.
+                for y in y.max(-1)..(y + i64::from(*len)).min(model.h) {
+                    model.set(x, y, *c);
+                }
+            }
+            Op::Line(a, b, clip, k, c) => {
+                let Some(mut pixels) = embedded_raster::Line::new(*a, *b).pixels(clip) else {
+                    continue;
+                };
+                for _ in 0..*k {
+                    pixels.next();
+                }
+                fb.fill_line(pixels, *c).unwrap();
+                for p in pixels {
+                    model.set(p.x.into(), p.y.into(), *c);
                 }
             }
         }

@@ -539,7 +539,9 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
     ///
     /// # Errors
     ///
-    /// The first error of a buffer or of `output`, as [`RenderError`].
+    /// The first error of a buffer or of `output`, as [`RenderError`];
+    /// [`RenderError::NoRows`], before anything is drawn, if the screen
+    /// has rows and `buffers` is empty or a buffer has none.
     ///
     /// # Examples
     ///

@@ -66,7 +66,7 @@ use crate::{
 pub struct Band<'a, T> {
     target: &'a mut T,
     top: i32,
-    /// At most the target's height.
+    /// At most the target's height, and the rows from `top` to `i32::MAX`.
     height: u32,
 }
 
@@ -85,7 +85,9 @@ impl<'a, T: OriginDimensions> Band<'a, T> {
     /// assert_eq!(band.rows(), 16..24);
     /// ```
     pub fn new(target: &'a mut T, top: i32) -> Self {
-        let height = target.size().height;
+        // No more rows than the screen has from `top` to `i32::MAX` (see
+        // `rows`): the target's rows below stand for none.
+        let height = target.size().height.min(i32::MAX.abs_diff(top));
         Self {
             target,
             top,
@@ -291,12 +293,19 @@ impl<C: Copy, T: SpanSink<C> + OriginDimensions> SpanSink<C> for Band<'_, T> {
         }
     }
 
+    /// A line that lies in the band's area (as the shapes clip it) goes
+    /// to the target whole, moved up by `top`; any other, run by run
+    /// through [`fill_rect`](Self::fill_rect), which keeps to the band's
+    /// rows and leaves the columns to the target's clipping.
     fn fill_line(&mut self, pixels: LinePixels, color: C) -> Result<(), Self::Error> {
-        // The shapes clipped the line to `bounds`, inside the band's rows,
-        // so moving it up by `top` keeps it in `i32`.
-        match self.top.checked_neg().and_then(|up| pixels.moved_down(up)) {
+        // Inside the band's rows, moving it up by `top` keeps it in `i32`.
+        let moved = match pixels.lies_in(&Bounds::of(&self.area())) {
+            true => self.top.checked_neg().and_then(|up| pixels.moved_down(up)),
+            false => None,
+        };
+        match moved {
             Some(moved) => self.target.fill_line(moved, color),
-            None => pixels.for_each_run(|run| crate::line::fill_run(self, run, color)),
+            None => pixels.for_each_run(|run| self.fill_rect(&run.rect(), color)),
         }
     }
 }
@@ -463,7 +472,9 @@ where
 /// # Errors
 ///
 /// The first error of `draw` ([`RenderError::Draw`]) or of `output`
-/// ([`RenderError::Flush`]); no band is sent after it.
+/// ([`RenderError::Flush`]); no band is sent after it. With `height`
+/// above 0, [`RenderError::NoRows`] before anything is drawn if
+/// `buffers` is empty or a buffer has no rows.
 ///
 /// # Examples
 ///
@@ -501,18 +512,22 @@ where
     let count = buffers.len();
     let mut sent = 0usize; // buffers sent at least once: a prefix
     let screen = i32::try_from(height).unwrap_or(i32::MAX);
+    if screen > 0 && (count == 0 || buffers.iter().any(|b| b.size().height == 0)) {
+        return Err(RenderError::NoRows);
+    }
     let mut top = 0i32;
     let mut next = 0usize;
     while top < screen {
         let Some(buffer) = buffers.get_mut(next) else {
-            return Ok(()); // no buffer at all
+            return Err(RenderError::NoRows); // checked above
         };
         let Size {
             width,
             height: rows,
         } = buffer.size();
         if rows == 0 {
-            return Ok(());
+            // Checked above, unless `size` changed since.
+            return Err(RenderError::NoRows);
         }
         if next < sent {
             output.wait(buffer).map_err(RenderError::Flush)?;
@@ -558,6 +573,9 @@ pub enum RenderError<D, F> {
     Draw(D),
     /// Handing a finished band on failed.
     Flush(F),
+    /// The screen has rows, and there is no buffer or a buffer has none:
+    /// nothing was drawn.
+    NoRows,
 }
 
 impl<D: fmt::Display, F: fmt::Display> fmt::Display for RenderError<D, F> {
@@ -565,6 +583,7 @@ impl<D: fmt::Display, F: fmt::Display> fmt::Display for RenderError<D, F> {
         match self {
             Self::Draw(e) => write!(f, "drawing a band failed: {e}"),
             Self::Flush(e) => write!(f, "sending a band failed: {e}"),
+            Self::NoRows => f.write_str("no band buffer with rows to draw the screen in"),
         }
     }
 }

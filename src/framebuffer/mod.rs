@@ -142,7 +142,7 @@ use embedded_graphics_core::{
 };
 
 use crate::{
-    clip::{advance, clip_to, row_major_skips},
+    clip::{advance, clip_to, row_major_skips, Bounds},
     line::LinePixels,
     raster::sink::SpanSink,
     span::Span,
@@ -361,6 +361,19 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
     fn row(&self, y: usize) -> Option<&[u8]> {
         let start = y.checked_mul(Self::STRIDE)?;
         self.data.0.get(start..start.checked_add(Self::STRIDE)?)
+    }
+
+    /// The pixels of `pixels` inside the framebuffer, run by run, each
+    /// clipped by [`fill_rectangle`](Self::fill_rectangle): for lines
+    /// that do not lie in the bounds (see
+    /// [`SpanSink::fill_line`](SpanSink::fill_line)), which no shape of
+    /// the crate sends.
+    #[inline(never)]
+    fn fill_line_clipped(&mut self, pixels: LinePixels, color: F::Color) -> Result<(), Infallible> {
+        pixels.for_each_run(|run| {
+            self.fill_rectangle(&run.rect(), color);
+            Ok(())
+        })
     }
 
     /// [`fill_solid`](DrawTarget::fill_solid) of a rectangle of any
@@ -623,14 +636,21 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
         Ok(())
     }
 
+    /// Clipped to the bounds: rows above the first are skipped, and a
+    /// column left or right of the pixels (in a packed format's padding
+    /// bits, say) is not drawn.
     fn fill_column(&mut self, top: Point, len: u32, color: F::Color) -> Result<(), Infallible> {
-        if let (Ok(x), Ok(y), Ok(len)) = (
-            usize::try_from(top.x),
-            usize::try_from(top.y),
-            usize::try_from(len),
+        // `W` and `H` are at most `i32::MAX` (see `new`).
+        let (x, y) = (i64::from(top.x), i64::from(top.y));
+        let (from, to) = (y.max(0), (y + i64::from(len)).min(H as i64));
+        if let (true, Ok(x), Ok(from), Ok(rows)) = (
+            x < W as i64,
+            usize::try_from(x),
+            usize::try_from(from),
+            usize::try_from(to - from),
         ) {
-            let rows = self.data.0.chunks_exact_mut(Self::STRIDE.max(1));
-            for row in rows.skip(y).take(len) {
+            let stride = Self::STRIDE.max(1);
+            for row in self.data.0.chunks_exact_mut(stride).skip(from).take(rows) {
                 F::write_pixel(row, x, color);
             }
         }
@@ -645,7 +665,15 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
     /// step down per four pixels) go as spans and columns; the others are
     /// walked pixel by pixel through the bytes
     /// ([`PixelFormat::fill_line`]).
+    ///
+    /// A line whose pixels do not all lie in the bounds (one its caller
+    /// did not clip) goes run by run through `fill_rect`, which clips:
+    /// nothing is written outside the pixels, in a packed format's padding
+    /// or the next row, at the cost of every run of the line.
     fn fill_line(&mut self, pixels: LinePixels, color: F::Color) -> Result<(), Infallible> {
+        if !pixels.lies_in(&Bounds::of(&self.bounds())) {
+            return self.fill_line_clipped(pixels, color);
+        }
         if pixels.has_long_runs() {
             return pixels.for_each_run(|run| {
                 if run.vertical {

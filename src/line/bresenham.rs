@@ -12,7 +12,7 @@ use super::{
     clip::{Canonical, Visible},
     Run,
 };
-use crate::raster::wide::Wide;
+use crate::{clip::Bounds, raster::wide::Wide};
 use embedded_graphics_core::geometry::Point;
 
 /// Calls `emit` with the runs of the visible part `v` of `c`, in order of
@@ -234,6 +234,72 @@ impl LinePixels {
         self.dminor == 0 || (self.x_major && 4 * self.dminor < self.dmajor)
     }
 
+    /// Whether every pixel left lies in `bounds`, without iterating:
+    /// true when the first and the last do, as the pixels move one way
+    /// along each axis. The last pixel's minor coordinate is not computed
+    /// (that takes a division) but compared: with `A = 2 dmajor`, `B = 2
+    /// dminor` and the decision `d` at the first pixel, the step after
+    /// pixel `j` moves along the minor axis for the `(m + 1)`-th time at
+    /// the first `j` with `d + j B >= m A`, so the `len - 1` steps move at
+    /// most `room` times iff `d + (len - 2) B < room A`. An empty line
+    /// lies anywhere.
+    ///
+    /// For sinks given pixels that their caller did not clip to their
+    /// bounds: the crate's own lines always lie in them.
+    #[inline(always)]
+    pub(crate) fn lies_in(&self, bounds: &Bounds) -> bool {
+        if self.is_empty() {
+            return true;
+        }
+        // Pixel coordinates are `i32`: the bounds as inclusive `i32`
+        // ranges (empty where the upper end is below the lower), so that
+        // the tests take 32 bits.
+        let narrow = |v: i64| i32::try_from(v).unwrap_or(if v < 0 { i32::MIN } else { i32::MAX });
+        let (xs, ys) = (
+            (narrow(bounds.x0), narrow(bounds.x1 - 1)),
+            (narrow(bounds.y0), narrow(bounds.y1 - 1)),
+        );
+        let (major, minor) = match self.x_major {
+            true => (xs, ys),
+            false => (ys, xs),
+        };
+        let (first, last, at) = (self.first_major, self.last_major, self.first_minor);
+        if bounds.x0 >= bounds.x1 || bounds.y0 >= bounds.y1 {
+            return false;
+        }
+        if first < major.0 || last > major.1 || at < minor.0 || at > minor.1 {
+            return false;
+        }
+        // Moves left along the minor axis before leaving the bounds, and
+        // the steps of the line: `u32`, as are `dmajor` and `dminor`.
+        let room = match self.minor_step > 0 {
+            true => minor.1.abs_diff(at),
+            false => at.abs_diff(minor.0),
+        };
+        let steps = last.abs_diff(first);
+        let (Some(before_last), Ok(dmajor), Ok(dminor)) = (
+            steps.checked_sub(1),
+            u32::try_from(self.dmajor),
+            u32::try_from(self.dminor),
+        ) else {
+            // A single pixel, inside.
+            return true;
+        };
+        // `d + (len - 2) B < room A`, halved products in `u64`.
+        let (moved, allowed) = (
+            u64::from(before_last) * u64::from(dminor),
+            u64::from(room) * u64::from(dmajor),
+        );
+        let d = self.decision;
+        match (i64::try_from(moved), i64::try_from(allowed)) {
+            // Both under 2^61 (every line in a display), |d| <= 2^33: i64.
+            (Ok(moved), Ok(allowed)) if moved < 1 << 61 && allowed < 1 << 61 => {
+                d + 2 * moved < 2 * allowed
+            }
+            _ => i128::from(d) + 2 * i128::from(moved) < 2 * i128::from(allowed),
+        }
+    }
+
     /// Whether the line is x-major (one pixel per column).
     pub(crate) fn x_major(&self) -> bool {
         self.x_major
@@ -327,5 +393,69 @@ impl Iterator for LinePixels {
             (self.first_major, self.last_major) = (i32::MAX, i32::MIN);
         }
         Some(p)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use embedded_graphics_core::{
+        geometry::{Point, Size},
+        primitives::Rectangle,
+    };
+
+    use super::*;
+    use crate::line::Line;
+
+    /// [`LinePixels::lies_in`] against its pixels, iterated: random short
+    /// lines listed in a large clip, partly iterated, tested against
+    /// random bounds near them.
+    #[test]
+    fn lies_in_is_whether_every_pixel_left_is_inside() {
+        let mut random = crate::raster::xorshift(0x2545_F491_4F6C_DD1D);
+        let mut next = |n: u64| (random.next().unwrap_or(0) % n) as i32;
+        let clip = Rectangle::new(Point::new(-64, -64), Size::new(128, 128));
+        let (mut inside, mut outside) = (0, 0);
+        for _ in 0..20_000 {
+            let mut at = || Point::new(next(41) - 20, next(41) - 20);
+            let line = Line::new(at(), at());
+            let Some(mut pixels) = line.pixels(&clip) else {
+                continue;
+            };
+            for _ in 0..next(4) {
+                pixels.next();
+            }
+            if pixels.is_empty() {
+                let nowhere = Bounds::of(&Rectangle::zero());
+                assert!(pixels.lies_in(&nowhere), "{line:?}");
+                continue;
+            }
+            // The pixels' bounding box, each side moved by -1, 0 or 1:
+            // bounds at, just inside and just outside the pixels.
+            let (lo, hi) = { pixels }.fold(
+                (
+                    Point::new(i32::MAX, i32::MAX),
+                    Point::new(i32::MIN, i32::MIN),
+                ),
+                |(lo, hi), p| (lo.component_min(p), hi.component_max(p)),
+            );
+            let mut jitter = || next(3) - 1;
+            let (x0, y0) = (lo.x + jitter(), lo.y + jitter());
+            let (x1, y1) = (hi.x + 1 + jitter(), hi.y + 1 + jitter());
+            let size = |a: i32, b: i32| (b - a).max(0) as u32;
+            let area = Rectangle::new(Point::new(x0, y0), Size::new(size(x0, x1), size(y0, y1)));
+            let every = { pixels }.all(|p| area.contains(p));
+            assert_eq!(
+                pixels.lies_in(&Bounds::of(&area)),
+                every,
+                "{line:?} from {:?} in {area:?}",
+                pixels.first()
+            );
+            match every {
+                true => inside += 1,
+                false => outside += 1,
+            }
+        }
+        // Both answers are common.
+        assert!(inside > 2_000 && outside > 2_000, "{inside} {outside}");
     }
 }

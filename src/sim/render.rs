@@ -370,10 +370,11 @@ pub fn render_scene_in_bands(
         },
     );
     let raster_time = start.elapsed();
-    // A `SimDisplay` cannot fail.
-    let Ok(()) = result.map_err(|e| match e {
-        band::RenderError::Draw(e) | band::RenderError::Flush(e) => e,
-    });
+    // A `SimDisplay` cannot fail, and the buffer has a row at least.
+    match result {
+        Ok(()) | Err(band::RenderError::NoRows) => {}
+        Err(band::RenderError::Draw(e) | band::RenderError::Flush(e)) => match e {},
+    }
     let stats_all = RenderStats {
         primitives: scene.commands().len() as u64,
         pixels_written: display.pixels_written(),
