@@ -21,10 +21,11 @@
 //! 8. the same polyline through `draw` (the framebuffer as a
 //!    `DrawTarget`): each pixel once, its pieces walked in masked tiles;
 //! 9. the same 20 segments drawn as separate thick lines;
-//! 10. the built-in scene (`builtin_scene::for_each_command`) from a
+//! 10. `.ci/icount`'s 64 lines 1 px wide and 16 px long, in a star;
+//! 11. the built-in scene (`builtin_scene::for_each_command`) from a
 //!     display list, drawn whole into the framebuffer, as `.ci/icount`'s
 //!     "whole frame" row;
-//! 11. the same list rendered in bands of 16 rows, as its "bands of 16"
+//! 12. the same list rendered in bands of 16 rows, as its "bands of 16"
 //!     row: where the bands' extra instructions go.
 //!
 //! Built for the host, it does nothing.
@@ -142,6 +143,15 @@ mod target {
         begin();
         for line in black_box(&lines) {
             let Ok(()) = black_box(line).draw_spans(black_box(FB));
+        }
+        end();
+        // `.ci/icount`'s 64 star lines 1 px wide and 16 px long.
+        let star: [_; 64] = core::array::from_fn(|k| {
+            super::builtin_scene::star_line(k as i32, 16).stroke(Rgb565::RED)
+        });
+        begin();
+        for line in black_box(&star) {
+            let Ok(()) = black_box(line).draw_spans(black_box(&mut *FB));
         }
         end();
         let shapes: &'static _ = SHAPES.insert(super::builtin_scene::SceneShapes::new());

@@ -299,7 +299,7 @@ impl<C: Copy, T: SpanSink<C> + OriginDimensions> SpanSink<C> for Band<'_, T> {
     /// rows and leaves the columns to the target's clipping.
     fn fill_line(&mut self, pixels: LinePixels, color: C) -> Result<(), Self::Error> {
         // Inside the band's rows, moving it up by `top` keeps it in `i32`.
-        let moved = match pixels.lies_in(&Bounds::of(&self.area())) {
+        let moved = match pixels.known_inside(&Bounds::of(&self.area())) {
             true => self.top.checked_neg().and_then(|up| pixels.moved_down(up)),
             false => None,
         };

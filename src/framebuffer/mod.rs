@@ -666,12 +666,12 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
     /// walked pixel by pixel through the bytes
     /// ([`PixelFormat::fill_line`]).
     ///
-    /// A line whose pixels do not all lie in the bounds (one its caller
-    /// did not clip) goes run by run through `fill_rect`, which clips:
-    /// nothing is written outside the pixels, in a packed format's padding
-    /// or the next row, at the cost of every run of the line.
+    /// A line listed in a clip larger than the bounds (by a caller who did
+    /// not clip it to them) goes run by run through `fill_rect`, which
+    /// clips: nothing is written outside the pixels, in a packed format's
+    /// padding or the next row, at the cost of every run of the line.
     fn fill_line(&mut self, pixels: LinePixels, color: F::Color) -> Result<(), Infallible> {
-        if !pixels.lies_in(&Bounds::of(&self.bounds())) {
+        if !pixels.known_inside(&Bounds::of(&self.bounds())) {
             return self.fill_line_clipped(pixels, color);
         }
         if pixels.has_long_runs() {

@@ -127,6 +127,9 @@ pub struct LinePixels {
     first_major: i32,
     last_major: i32,
     first_minor: i32,
+    /// A minor coordinate inside the clip the pixels were listed in that
+    /// none passes: every pixel's lies between `first_minor` and it.
+    minor_bound: i32,
     /// The decision variable at the first pixel, and the line's whole
     /// major and minor extents (`0 <= dminor <= dmajor < 2^32`).
     decision: i64,
@@ -143,6 +146,7 @@ impl LinePixels {
             first_major: v.first_major,
             last_major: v.last_major,
             first_minor: v.first_minor,
+            minor_bound: v.minor_bound,
             decision: v.decision,
             dmajor: c.dmajor,
             dminor: c.dminor,
@@ -155,6 +159,7 @@ impl LinePixels {
         let mut moved = self;
         if self.x_major {
             moved.first_minor = self.first_minor.checked_add(dy)?;
+            moved.minor_bound = self.minor_bound.checked_add(dy)?;
         } else {
             moved.first_major = self.first_major.checked_add(dy)?;
             moved.last_major = self.last_major.checked_add(dy)?;
@@ -234,26 +239,20 @@ impl LinePixels {
         self.dminor == 0 || (self.x_major && 4 * self.dminor < self.dmajor)
     }
 
-    /// Whether every pixel left lies in `bounds`, without iterating:
-    /// true when the first and the last do, as the pixels move one way
-    /// along each axis. The last pixel's minor coordinate is not computed
-    /// (that takes a division) but compared: with `A = 2 dmajor`, `B = 2
-    /// dminor` and the decision `d` at the first pixel, the step after
-    /// pixel `j` moves along the minor axis for the `(m + 1)`-th time at
-    /// the first `j` with `d + j B >= m A`, so the `len - 1` steps move at
-    /// most `room` times iff `d + (len - 2) B < room A`. An empty line
-    /// lies anywhere.
-    ///
-    /// For sinks given pixels that their caller did not clip to their
-    /// bounds: the crate's own lines always lie in them.
+    /// Whether every pixel left is known to lie in `bounds`, without
+    /// iterating: the first pixel, the last major coordinate and the
+    /// minor bound (a coordinate inside the clip the pixels were listed
+    /// in, which no pixel passes) all do, as the pixels move one way
+    /// along each axis. Always true for pixels listed in a clip inside
+    /// `bounds` (as the crate's shapes list them, in the sink's own
+    /// bounds); possibly false for others even if they lie inside. A line
+    /// iterated to its end may answer either: it lights nothing. Tests in
+    /// 32 bits: for sinks that must not trust their callers to have
+    /// clipped.
     #[inline(always)]
-    pub(crate) fn lies_in(&self, bounds: &Bounds) -> bool {
-        if self.is_empty() {
-            return true;
-        }
+    pub(crate) fn known_inside(&self, bounds: &Bounds) -> bool {
         // Pixel coordinates are `i32`: the bounds as inclusive `i32`
-        // ranges (empty where the upper end is below the lower), so that
-        // the tests take 32 bits.
+        // ranges (empty where the upper end is below the lower).
         let narrow = |v: i64| i32::try_from(v).unwrap_or(if v < 0 { i32::MIN } else { i32::MAX });
         let (xs, ys) = (
             (narrow(bounds.x0), narrow(bounds.x1 - 1)),
@@ -263,41 +262,13 @@ impl LinePixels {
             true => (xs, ys),
             false => (ys, xs),
         };
-        let (first, last, at) = (self.first_major, self.last_major, self.first_minor);
-        if bounds.x0 >= bounds.x1 || bounds.y0 >= bounds.y1 {
-            return false;
-        }
-        if first < major.0 || last > major.1 || at < minor.0 || at > minor.1 {
-            return false;
-        }
-        // Moves left along the minor axis before leaving the bounds, and
-        // the steps of the line: `u32`, as are `dmajor` and `dminor`.
-        let room = match self.minor_step > 0 {
-            true => minor.1.abs_diff(at),
-            false => at.abs_diff(minor.0),
-        };
-        let steps = last.abs_diff(first);
-        let (Some(before_last), Ok(dmajor), Ok(dminor)) = (
-            steps.checked_sub(1),
-            u32::try_from(self.dmajor),
-            u32::try_from(self.dminor),
-        ) else {
-            // A single pixel, inside.
-            return true;
-        };
-        // `d + (len - 2) B < room A`, halved products in `u64`.
-        let (moved, allowed) = (
-            u64::from(before_last) * u64::from(dminor),
-            u64::from(room) * u64::from(dmajor),
-        );
-        let d = self.decision;
-        match (i64::try_from(moved), i64::try_from(allowed)) {
-            // Both under 2^61 (every line in a display), |d| <= 2^33: i64.
-            (Ok(moved), Ok(allowed)) if moved < 1 << 61 && allowed < 1 << 61 => {
-                d + 2 * moved < 2 * allowed
-            }
-            _ => i128::from(d) + 2 * i128::from(moved) < 2 * i128::from(allowed),
-        }
+        let within = |v: i32, (lo, hi): (i32, i32)| lo <= v && v <= hi;
+        bounds.x0 < bounds.x1
+            && bounds.y0 < bounds.y1
+            && within(self.first_major, major)
+            && within(self.last_major, major)
+            && within(self.first_minor, minor)
+            && within(self.minor_bound, minor)
     }
 
     /// Whether the line is x-major (one pixel per column).
@@ -406,17 +377,22 @@ mod tests {
     use super::*;
     use crate::line::Line;
 
-    /// [`LinePixels::lies_in`] against its pixels, iterated: random short
-    /// lines listed in a large clip, partly iterated, tested against
-    /// random bounds near them.
+    /// [`LinePixels::known_inside`] against its pixels, iterated: random
+    /// short lines listed in a clip, partly iterated. Sound: never true
+    /// when a pixel left lies outside the bounds tested (random bounds at,
+    /// just inside and just outside the pixels' bounding box). Complete
+    /// where it must be: true in any bounds holding the clip.
     #[test]
-    fn lies_in_is_whether_every_pixel_left_is_inside() {
+    fn known_inside_only_when_every_pixel_left_is() {
         let mut random = crate::raster::xorshift(0x2545_F491_4F6C_DD1D);
         let mut next = |n: u64| (random.next().unwrap_or(0) % n) as i32;
-        let clip = Rectangle::new(Point::new(-64, -64), Size::new(128, 128));
         let (mut inside, mut outside) = (0, 0);
         for _ in 0..20_000 {
-            let mut at = || Point::new(next(41) - 20, next(41) - 20);
+            let clip = Rectangle::new(
+                Point::new(next(41) - 20, next(41) - 20),
+                Size::new(next(40) as u32, next(40) as u32),
+            );
+            let mut at = || Point::new(next(81) - 40, next(81) - 40);
             let line = Line::new(at(), at());
             let Some(mut pixels) = line.pixels(&clip) else {
                 continue;
@@ -425,12 +401,21 @@ mod tests {
                 pixels.next();
             }
             if pixels.is_empty() {
-                let nowhere = Bounds::of(&Rectangle::zero());
-                assert!(pixels.lies_in(&nowhere), "{line:?}");
                 continue;
             }
-            // The pixels' bounding box, each side moved by -1, 0 or 1:
-            // bounds at, just inside and just outside the pixels.
+            // In the clip, and in anything holding it.
+            let (grow, shift) = (next(3) as u32, next(3) - 1);
+            let around = Rectangle::new(
+                clip.top_left - Point::new(grow as i32 + shift, grow as i32),
+                clip.size + Size::new(2 * grow + 1, 2 * grow),
+            );
+            if Bounds::of(&around).intersect(Bounds::of(&clip)) == Some(Bounds::of(&clip)) {
+                assert!(
+                    pixels.known_inside(&Bounds::of(&around)),
+                    "{line:?} in {clip:?}"
+                );
+            }
+            // The pixels' bounding box, each side moved by -1, 0 or 1.
             let (lo, hi) = { pixels }.fold(
                 (
                     Point::new(i32::MAX, i32::MAX),
@@ -444,18 +429,15 @@ mod tests {
             let size = |a: i32, b: i32| (b - a).max(0) as u32;
             let area = Rectangle::new(Point::new(x0, y0), Size::new(size(x0, x1), size(y0, y1)));
             let every = { pixels }.all(|p| area.contains(p));
-            assert_eq!(
-                pixels.lies_in(&Bounds::of(&area)),
-                every,
-                "{line:?} from {:?} in {area:?}",
-                pixels.first()
-            );
-            match every {
-                true => inside += 1,
-                false => outside += 1,
+            if pixels.known_inside(&Bounds::of(&area)) {
+                assert!(every, "{line:?} from {:?} in {area:?}", pixels.first());
+                inside += 1;
+            } else if !every {
+                outside += 1;
             }
         }
-        // Both answers are common.
-        assert!(inside > 2_000 && outside > 2_000, "{inside} {outside}");
+        // Both answers occur often (a minor bound on the clip's edge is
+        // outside most of these tight boxes, so true is the rarer).
+        assert!(inside > 300 && outside > 2_000, "{inside} {outside}");
     }
 }

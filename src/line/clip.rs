@@ -184,6 +184,15 @@ impl Canonical {
             first_major: first,
             last_major: last,
             first_minor: at(line.minor0)?,
+            // The far end's: no pixel passes it.
+            minor_bound: {
+                let far = if line.reversed { start } else { end };
+                if line.x_major {
+                    far.y
+                } else {
+                    far.x
+                }
+            },
             decision: 0,
         };
         if skip_end && first == last {
@@ -220,18 +229,21 @@ impl Canonical {
         }
         let (m_lo, m_hi) = (m_lo.max(0), m_hi.min(self.dminor));
         let (lo, hi, m, d) = self.entry(lo, hi, m_lo, m_hi)?;
-        self.steps(lo, hi, m, d)
+        self.steps(lo, hi, m, m_hi, d)
     }
 
     /// The visible steps `lo..=hi`, with offset `m` and decision `d` at
-    /// `lo`.
-    fn steps(&self, lo: i64, hi: i64, m: i64, d: i64) -> Option<Visible> {
-        // Every visible pixel is a pixel of the line: all fit in i32.
-        let minor = self.minor0 + self.minor_step * m;
+    /// `lo`, and no offset past `m_hi`.
+    fn steps(&self, lo: i64, hi: i64, m: i64, m_hi: i64, d: i64) -> Option<Visible> {
+        // Every visible pixel is a pixel of the line, and the offset
+        // `m_hi` one inside the clip (within the line's own offsets): all
+        // fit in i32.
+        let minor = |m: i64| i32::try_from(self.minor0 + self.minor_step * m).ok();
         Some(Visible {
             first_major: i32::try_from(self.major0 + lo).ok()?,
             last_major: i32::try_from(self.major0 + hi).ok()?,
-            first_minor: i32::try_from(minor).ok()?,
+            first_minor: minor(m)?,
+            minor_bound: minor(m_hi)?,
             decision: d,
         })
     }
@@ -317,5 +329,8 @@ pub(crate) struct Visible {
     pub first_major: i32,
     pub last_major: i32,
     pub first_minor: i32,
+    /// A minor coordinate inside the clip that no visible pixel passes:
+    /// each lies between `first_minor` and this one.
+    pub minor_bound: i32,
     pub decision: i64,
 }

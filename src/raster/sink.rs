@@ -29,13 +29,15 @@ use crate::{
 /// panic if a caller breaks it.
 ///
 /// Ranges: coordinates are any `i32` and lengths any `u32`; the provided
-/// methods saturate at `i32::MAX` rather than overflow. The crate's
-/// implementations, given pixels outside their bounds: a
-/// [`Framebuffer`](crate::Framebuffer) never writes outside its bytes (it
-/// drops a span that is not wholly inside one row, and a column's pixels
-/// past a row's end; a line walked through its bytes may reach the next
-/// row), a [`DrawTargetSink`] passes them on to the `DrawTarget`, which
-/// clips.
+/// methods clip columns and rectangles to the bounds and never overflow.
+/// The crate's implementations, given pixels outside their bounds, write
+/// none of them and change no other pixel: a
+/// [`Framebuffer`](crate::Framebuffer) drops a span that is not wholly
+/// inside one row, clips columns and rectangles, and draws a line whose
+/// pixels it cannot show to lie inside (listed in a larger clip) run by
+/// run, clipped, at the cost of every run; a [`Band`](crate::band::Band)
+/// keeps to its rows; a [`DrawTargetSink`] passes them on to the
+/// `DrawTarget`, which clips.
 ///
 /// # Examples
 ///
