@@ -299,7 +299,19 @@ impl<C: Copy, T: SpanSink<C> + OriginDimensions> SpanSink<C> for Band<'_, T> {
     /// rows and leaves the columns to the target's clipping.
     fn fill_line(&mut self, pixels: LinePixels, color: C) -> Result<(), Self::Error> {
         // Inside the band's rows, moving it up by `top` keeps it in `i32`.
-        let moved = match pixels.known_inside(&Bounds::of(&self.area())) {
+        // The band's columns and rows, inclusive (its rows end before
+        // i32::MAX, see `new`).
+        let columns = (
+            0,
+            i32::try_from(self.target.size().width).unwrap_or(i32::MAX) - 1,
+        );
+        let rows = self.rows();
+        // A band of no rows at i32::MIN: an empty range.
+        let rows = rows
+            .end
+            .checked_sub(1)
+            .map_or((0, -1), |last| (rows.start, last));
+        let moved = match pixels.known_inside(columns, rows) {
             true => self.top.checked_neg().and_then(|up| pixels.moved_down(up)),
             false => None,
         };

@@ -12,7 +12,7 @@ use super::{
     clip::{Canonical, Visible},
     Run,
 };
-use crate::{clip::Bounds, raster::wide::Wide};
+use crate::raster::wide::Wide;
 use embedded_graphics_core::geometry::Point;
 
 /// Calls `emit` with the runs of the visible part `v` of `c`, in order of
@@ -239,33 +239,25 @@ impl LinePixels {
         self.dminor == 0 || (self.x_major && 4 * self.dminor < self.dmajor)
     }
 
-    /// Whether every pixel left is known to lie in `bounds`, without
-    /// iterating: the first pixel, the last major coordinate and the
-    /// minor bound (a coordinate inside the clip the pixels were listed
-    /// in, which no pixel passes) all do, as the pixels move one way
-    /// along each axis. Always true for pixels listed in a clip inside
-    /// `bounds` (as the crate's shapes list them, in the sink's own
-    /// bounds); possibly false for others even if they lie inside. A line
-    /// iterated to its end may answer either: it lights nothing. Tests in
-    /// 32 bits: for sinks that must not trust their callers to have
-    /// clipped.
+    /// Whether every pixel left is known to lie in columns `xs` and rows
+    /// `ys` (inclusive `(first, last)` ranges, empty if `last < first`),
+    /// without iterating: the first pixel, the last major coordinate and
+    /// the minor bound (a coordinate inside the clip the pixels were
+    /// listed in, which no pixel passes) all do, as the pixels move one
+    /// way along each axis. Always true for pixels listed in a clip
+    /// inside those ranges (as the crate's shapes list them, in the
+    /// sink's own bounds); possibly false for others even if they lie
+    /// inside. A line iterated to its end may answer either: it lights
+    /// nothing. 32-bit compares only (ranges given as constants fold): for
+    /// sinks that must not trust their callers to have clipped.
     #[inline(always)]
-    pub(crate) fn known_inside(&self, bounds: &Bounds) -> bool {
-        // Pixel coordinates are `i32`: the bounds as inclusive `i32`
-        // ranges (empty where the upper end is below the lower).
-        let narrow = |v: i64| i32::try_from(v).unwrap_or(if v < 0 { i32::MIN } else { i32::MAX });
-        let (xs, ys) = (
-            (narrow(bounds.x0), narrow(bounds.x1 - 1)),
-            (narrow(bounds.y0), narrow(bounds.y1 - 1)),
-        );
+    pub(crate) fn known_inside(&self, xs: (i32, i32), ys: (i32, i32)) -> bool {
         let (major, minor) = match self.x_major {
             true => (xs, ys),
             false => (ys, xs),
         };
-        let within = |v: i32, (lo, hi): (i32, i32)| lo <= v && v <= hi;
-        bounds.x0 < bounds.x1
-            && bounds.y0 < bounds.y1
-            && within(self.first_major, major)
+        let within = |v: i32, (first, last): (i32, i32)| first <= v && v <= last;
+        within(self.first_major, major)
             && within(self.last_major, major)
             && within(self.first_minor, minor)
             && within(self.minor_bound, minor)
@@ -374,8 +366,15 @@ mod tests {
         primitives::Rectangle,
     };
 
-    use super::*;
-    use crate::line::Line;
+    use crate::{clip::Bounds, line::Line};
+
+    /// A rectangle's columns and rows as inclusive ranges (both within 40
+    /// px of the origin here).
+    fn ranges(r: &Rectangle) -> ((i32, i32), (i32, i32)) {
+        let (x, y) = (r.top_left.x, r.top_left.y);
+        let (w, h) = (r.size.width as i32, r.size.height as i32);
+        ((x, x + w - 1), (y, y + h - 1))
+    }
 
     /// [`LinePixels::known_inside`] against its pixels, iterated: random
     /// short lines listed in a clip, partly iterated. Sound: never true
@@ -411,7 +410,7 @@ mod tests {
             );
             if Bounds::of(&around).intersect(Bounds::of(&clip)) == Some(Bounds::of(&clip)) {
                 assert!(
-                    pixels.known_inside(&Bounds::of(&around)),
+                    pixels.known_inside(ranges(&around).0, ranges(&around).1),
                     "{line:?} in {clip:?}"
                 );
             }
@@ -429,7 +428,7 @@ mod tests {
             let size = |a: i32, b: i32| (b - a).max(0) as u32;
             let area = Rectangle::new(Point::new(x0, y0), Size::new(size(x0, x1), size(y0, y1)));
             let every = { pixels }.all(|p| area.contains(p));
-            if pixels.known_inside(&Bounds::of(&area)) {
+            if pixels.known_inside(ranges(&area).0, ranges(&area).1) {
                 assert!(every, "{line:?} from {:?} in {area:?}", pixels.first());
                 inside += 1;
             } else if !every {

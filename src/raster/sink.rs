@@ -34,8 +34,9 @@ use crate::{
 /// none of them and change no other pixel: a
 /// [`Framebuffer`](crate::Framebuffer) drops a span that is not wholly
 /// inside one row, clips columns and rectangles, and draws a line whose
-/// pixels it cannot show to lie inside (listed in a larger clip) run by
-/// run, clipped, at the cost of every run; a [`Band`](crate::band::Band)
+/// pixels it cannot show to lie inside (listed in a larger clip) pixel by
+/// pixel, clipped, at the cost of every pixel; a
+/// [`Band`](crate::band::Band)
 /// keeps to its rows; a [`DrawTargetSink`] passes them on to the
 /// `DrawTarget`, which clips.
 ///
