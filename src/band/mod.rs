@@ -293,14 +293,14 @@ impl<C: Copy, T: SpanSink<C> + OriginDimensions> SpanSink<C> for Band<'_, T> {
         }
     }
 
-    /// A line that lies in the band's area (as the shapes clip it) goes
-    /// to the target whole, moved up by `top`; any other, run by run
+    /// A line known to lie in the band's area (as the shapes clip it)
+    /// goes to the target whole, moved up by `top`; any other, run by run
     /// through [`fill_rect`](Self::fill_rect), which keeps to the band's
     /// rows and leaves the columns to the target's clipping.
     fn fill_line(&mut self, pixels: LinePixels, color: C) -> Result<(), Self::Error> {
-        // Inside the band's rows, moving it up by `top` keeps it in `i32`.
         // The band's columns and rows, inclusive (its rows end before
-        // i32::MAX, see `new`).
+        // i32::MAX, see `new`). Inside them, moving the line up by `top`
+        // keeps it in `i32`.
         let columns = (
             0,
             i32::try_from(self.target.size().width).unwrap_or(i32::MAX) - 1,
