@@ -11,7 +11,7 @@ use embedded_raster::{
     band::DirtyRows,
     framebuffer::{buffer_size, Gray8Bytes},
     sim::SimDisplay,
-    Framebuffer, Line, Triangle, Vertex,
+    Framebuffer, Line, SpanDrawable, Triangle, Vertex,
 };
 use rng::Rng;
 
@@ -29,8 +29,13 @@ fn random_drawing(rng: &mut Rng, screen: &mut DirtyRows<Fb, 30>) {
             screen.fill_solid(&area, luma).unwrap();
         }
         1 => {
+            // Through `DrawTarget`, or whole through `SpanSink::fill_line`.
             let (a, b) = (point(rng), point(rng));
-            Line::new(a, b).stroke(luma).draw(screen).unwrap();
+            let line = Line::new(a, b).stroke(luma);
+            match rng.below(2) {
+                0 => line.draw(screen).unwrap(),
+                _ => line.draw_spans(screen).unwrap(),
+            }
         }
         2 => {
             let v = |rng: &mut Rng| {

@@ -275,10 +275,13 @@ impl<C: Copy, T: SpanSink<C> + OriginDimensions, const H: usize> SpanSink<C> for
         self.target.fill_rect(area, color)
     }
 
+    /// Marks the line's runs (a row's pixels of an x-major line at once, a
+    /// column's of a y-major one), then passes the line on whole.
     fn fill_line(&mut self, pixels: LinePixels, color: C) -> Result<(), Self::Error> {
-        for p in pixels {
-            self.mark(&Rectangle::new(p, Size::new(1, 1)));
-        }
+        let Ok(()) = pixels.for_each_run(|run| {
+            self.mark(&run.rect());
+            Ok::<(), core::convert::Infallible>(())
+        });
         self.target.fill_line(pixels, color)
     }
 }
