@@ -204,9 +204,9 @@ macro_rules! byte_format {
                 }
             }
 
-            // Inlined into the framebuffer's `fill_line`, whose test that
-            // the line lies inside folds part of `walks_by_index`
-            // (Cortex-M4, `.ci/icount`: 16 px lines 481 → 472
+            // Inlined into the framebuffer's `fill_line`, after its test
+            // that the line lies inside; `walks_by_index` still runs, and
+            // the pixel-by-pixel path is still linked (Cortex-M4, `.ci/icount`: 16 px lines 481 → 472
             // instructions; the lines-only firmware at opt-level "s" 3,840
             // → 3,744 bytes, `.ci/codesize`).
             #[inline]
