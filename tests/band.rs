@@ -62,6 +62,16 @@ fn point(rng: &mut Rng) -> Point {
     Point::new(x, y)
 }
 
+/// A 1-pixel line's end: mostly near the screen, sometimes anywhere in
+/// `i32` (lines whose visible part is a sliver of their length, kept
+/// from band to band).
+fn line_end(rng: &mut Rng) -> Point {
+    match rng.below(4) {
+        0 => Point::new(rng.next() as i32, rng.next() as i32),
+        _ => point(rng),
+    }
+}
+
 fn color(rng: &mut Rng) -> Rgb888 {
     let c = rng.next();
     Rgb888::new(c as u8, (c >> 8) as u8, (c >> 16) as u8)
@@ -104,7 +114,7 @@ fn list<'a>(rng: &mut Rng, shapes: &'a Shapes) -> DisplayList<'a, Rgb888, 64, 16
             2 => Command::Gouraud(triangle.gouraud([color(rng), color(rng), color(rng)])),
             3 => Command::DepthTriangle(triangle.fill(color(rng)), z),
             4 => Command::DepthGouraud(triangle.gouraud([color(rng), color(rng), color(rng)]), z),
-            5 => Command::Line(Line::new(point(rng), point(rng)).stroke(color(rng))),
+            5 => Command::Line(Line::new(line_end(rng), line_end(rng)).stroke(color(rng))),
             6 => {
                 let width = rng.below(7) as u32;
                 Command::ThickLine(
@@ -302,6 +312,71 @@ fn shapes_on_band_boundaries() {
             .collect();
         assert_eq!(counts, want, "bands of {rows}");
     }
+}
+
+/// More triangles going on below a band than there are slots to keep
+/// their walks in (24): 40 triangles across the whole screen, between 40
+/// lines in every direction, some with ends far off it. The triangles
+/// without a slot are clipped again in each band; the frame is the same.
+#[test]
+fn more_walks_than_slots() {
+    let mut rng = Rng(0x5DEE_CE66_D1CE_4E5B);
+    let mut list = DisplayList::<Rgb888, 96, 16>::new();
+    list.push(Command::Clear(Rgb888::BLACK)).unwrap();
+    for k in 0..80 {
+        let (top, bottom) = (rng.below(3) as i32 - 2, H as i32 + rng.below(3) as i32);
+        let (a, b) = (point(&mut rng), point(&mut rng));
+        let far = k % 5 == 0;
+        let x = |p: Point| if far { p.x * 100_000 } else { p.x };
+        let (start, end) = match k % 4 {
+            0 | 1 => (Point::new(x(a), top), Point::new(x(b), bottom)),
+            _ => (Point::new(x(a), bottom), Point::new(x(b), top)),
+        };
+        let command = match k % 2 {
+            0 => Command::Line(Line::new(start, end).stroke(color(&mut rng))),
+            _ => {
+                let v = |p: Point| Vertex::from_raw(p.x.clamp(-100, 100) * 4096, p.y * 4096);
+                let apex = Vertex::from_raw(rng.below(u64::from(W) * 4096) as i32, 0);
+                Command::Triangle(Triangle::new(v(start), v(end), apex).fill(color(&mut rng)))
+            }
+        };
+        list.push(command).unwrap();
+    }
+    let mut display = SimDisplay::new(W, H, Rgb888::BLACK);
+    list.draw(&mut display).unwrap();
+    let want: Vec<u32> = (0..H as i32)
+        .flat_map(|y| (0..W as i32).map(move |x| Point::new(x, y)))
+        .map(|p| display.write_count(p).unwrap())
+        .collect();
+    for rows in [1, 3, 8] {
+        let (pixels, counts) = banded_96(&list, rows);
+        assert_eq!(pixels, display.pixels(), "bands of {rows}");
+        assert_eq!(counts, want, "bands of {rows}");
+    }
+}
+
+/// [`banded`] for a list of 96 commands, one buffer, no depth.
+fn banded_96(list: &DisplayList<'_, Rgb888, 96, 16>, rows: u32) -> (Vec<Rgb888>, Vec<u32>) {
+    let mut pixels = vec![Rgb888::BLACK; (W * H) as usize];
+    let mut counts = vec![0u32; (W * H) as usize];
+    let mut bufs = [SimDisplay::new(W, rows, Rgb888::BLACK)];
+    let mut seen = vec![0u32; (W * rows) as usize];
+    let mut output = |buffer: &SimDisplay<Rgb888>, area: Rectangle| {
+        for r in 0..area.size.height as i32 {
+            for x in 0..W as i32 {
+                let i = (r as u32 * W + x as u32) as usize;
+                let screen = ((area.top_left.y + r) as u32 * W + x as u32) as usize;
+                let total = buffer.write_count(Point::new(x, r)).unwrap();
+                counts[screen] = total - seen[i];
+                seen[i] = total;
+                pixels[screen] = buffer.pixel(Point::new(x, r)).unwrap();
+            }
+        }
+        assert_eq!(buffer.out_of_bounds_writes(), 0);
+        Ok::<(), ()>(())
+    };
+    list.render_bands(H, &mut bufs, None, &mut output).unwrap();
+    (pixels, counts)
 }
 
 /// A command below the screen lights nothing in any band: no band maps
