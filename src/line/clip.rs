@@ -154,8 +154,11 @@ impl Canonical {
     /// distances from its corner taken as `u32`), and the visible part is
     /// the textbook start `D = 2 dminor - dmajor - b`, without division or
     /// clip arithmetic, moved on by one Bresenham step when the skipped end
-    /// is the first. `None` if an end lies outside `clip` or no pixel is
-    /// left: [`visible`](Self::visible) then clips.
+    /// is the first. All of it in `i32`: a clip at most `2^30` px a side
+    /// keeps the ends less than `2^30` apart, so that `2 dminor`, `2
+    /// dmajor` and the decision fit. `None` if an end lies outside `clip`,
+    /// the clip is larger, or no pixel is left: [`visible`](Self::visible)
+    /// then clips.
     #[inline]
     pub fn inside(
         start: Point,
@@ -163,6 +166,7 @@ impl Canonical {
         clip: &Rectangle,
         skip_end: bool,
     ) -> Option<(Self, Visible)> {
+        const LARGEST: u32 = 1 << 30;
         let corner = clip.top_left;
         let within = |p: Point| {
             p.x >= corner.x
@@ -170,53 +174,70 @@ impl Canonical {
                 && p.x.abs_diff(corner.x) < clip.size.width
                 && p.y.abs_diff(corner.y) < clip.size.height
         };
+        if clip.size.width > LARGEST || clip.size.height > LARGEST {
+            return None;
+        }
         if !(within(start) && within(end)) {
             return None;
         }
-        let line = Self::new(start, end);
-        let (two_minor, two_major) = (2 * line.dminor, 2 * line.dmajor);
-        let mut d = two_minor - line.dmajor - i64::from(line.minor_step > 0);
-        // Both ends lie in the clip, and so every pixel of the line: the
-        // coordinates below are `i32`.
-        let at = |v: i64| i32::try_from(v).ok();
-        let (first, last) = (at(line.major0)?, at(line.major0 + line.dmajor)?);
-        let mut visible = Visible {
-            first_major: first,
-            last_major: last,
-            first_minor: at(line.minor0)?,
-            // The far end's: no pixel passes it.
-            minor_bound: {
-                let far = if line.reversed { start } else { end };
-                if line.x_major {
-                    far.y
-                } else {
-                    far.x
-                }
-            },
-            decision: 0,
+        // Both ends in the clip: |dx|, |dy| < 2^30.
+        let (dx, dy) = (end.x - start.x, end.y - start.y);
+        let x_major = dx.abs() >= dy.abs();
+        let (dmaj, dmin) = if x_major { (dx, dy) } else { (dy, dx) };
+        // Drawn from the end with the smaller major coordinate.
+        let reversed = dmaj < 0;
+        let (first, far, dmin) = match reversed {
+            true => (end, start, -dmin),
+            false => (start, end, dmin),
         };
-        if skip_end && first == last {
+        let (major0, minor0, far_minor) = match x_major {
+            true => (first.x, first.y, far.y),
+            false => (first.y, first.x, far.x),
+        };
+        let (dmajor, dminor) = (dmaj.abs(), dmin.abs());
+        let minor_step = if dmin < 0 { -1 } else { 1 };
+        let (two_minor, two_major) = (2 * dminor, 2 * dmajor);
+        // Under 2^31 - 2^30: 2 dminor - dmajor <= dminor.
+        let mut d = two_minor - dmajor - i32::from(minor_step > 0);
+        // The far end's major coordinate: a point of the clip.
+        let last = major0 + dmajor;
+        if skip_end && dmajor == 0 {
             return None;
         }
-        // Pixels of the line lie in the clip: neither step leaves i32.
-        if skip_end && line.reversed {
+        let mut visible = Visible {
+            first_major: major0,
+            last_major: last,
+            first_minor: minor0,
+            // The far end's: no pixel passes it.
+            minor_bound: far_minor,
+            decision: 0,
+        };
+        // Pixels of the line lie in the clip: neither step leaves i32, nor
+        // does the decision (a move takes 2 dmajor from a decision >= 0,
+        // and 2 dminor is added to one below 2^30).
+        if skip_end && reversed {
             visible.first_major += 1;
             if d >= 0 {
-                visible.first_minor += if line.minor_step > 0 { 1 } else { -1 };
+                visible.first_minor += minor_step;
                 d -= two_major;
             }
             d += two_minor;
         } else if skip_end {
             visible.last_major -= 1;
         }
-        visible.decision = d;
+        visible.decision = d.into();
+        let line = Self {
+            x_major,
+            major0: major0.into(),
+            minor0: minor0.into(),
+            dmajor: dmajor.into(),
+            dminor: dminor.into(),
+            minor_step: minor_step.into(),
+            reversed,
+        };
         Some((line, visible))
     }
 
-    /// The exactly clipped visible part, or `None` if no pixel of the line
-    /// lies inside `clip`; for any line, but lines inside the clip are
-    /// found faster by [`inside`](Self::inside). Out of line: its frame
-    /// is large.
     #[inline(never)]
     pub fn visible(&self, clip: &Rectangle, skip_end: bool) -> Option<Visible> {
         let (lo, hi) = self.major_steps(clip, skip_end)?;
@@ -333,4 +354,76 @@ pub(crate) struct Visible {
     /// each lies between `first_minor` and this one.
     pub minor_bound: i32,
     pub decision: i64,
+}
+
+#[cfg(test)]
+mod tests {
+    use embedded_graphics_core::{
+        geometry::{Point, Size},
+        primitives::Rectangle,
+    };
+
+    use super::{Canonical, Visible};
+
+    /// [`Canonical::inside`], in `i32`, against the general clip
+    /// [`Canonical::visible`] (checked against the line reference in
+    /// `tests/line.rs`): the same line and the same visible part, field
+    /// for field, for lines with both ends in clips anywhere in `i32` of
+    /// every size up to `2^30` px a side (the largest it takes), with and
+    /// without the end pixel. Larger clips are left to `visible`.
+    #[test]
+    fn inside_matches_the_general_clip() {
+        let mut random = crate::raster::xorshift(0x6A09_E667_F3BC_C909);
+        let mut next = |n: u64| random.next().unwrap_or(0) % n;
+        let mut taken = 0;
+        for case in 0..50_000u64 {
+            let side = |bits: u64| match bits {
+                0 => 1 << 30,
+                1 => (1 << 30) - 1,
+                2 => (1 << 30) + 1,
+                b => 1 + (1u64 << (b % 31)) as u32 / 2,
+            };
+            let size = Size::new(side(next(34)), side(next(34)));
+            let corner = |len: u32, r: u64| {
+                let room = (1u64 << 32) - u64::from(len);
+                (i64::from(i32::MIN) + (r % room) as i64) as i32
+            };
+            let clip = Rectangle::new(
+                Point::new(corner(size.width, next(1 << 40)), corner(size.height, next(1 << 40))),
+                size,
+            );
+            let mut at = || {
+                let mut offset = |len: u32| match next(4) {
+                    0 => 0,
+                    1 => len - 1,
+                    _ => next(u64::from(len)) as u32,
+                };
+                let (dx, dy) = (offset(size.width), offset(size.height));
+                Point::new(
+                    clip.top_left.x.wrapping_add_unsigned(dx),
+                    clip.top_left.y.wrapping_add_unsigned(dy),
+                )
+            };
+            let (start, end) = (at(), at());
+            let skip_end = case % 2 == 0;
+            let general = Canonical::new(start, end);
+            // A single pixel is never stepped: its decision does not
+            // matter (and the two differ).
+            let one = |(c, mut v): (Canonical, Visible)| {
+                if v.first_major == v.last_major {
+                    v.decision = 0;
+                }
+                (c, v)
+            };
+            let want = general.visible(&clip, skip_end).map(|v| one((general, v)));
+            let got = Canonical::inside(start, end, &clip, skip_end).map(one);
+            let large = size.width > 1 << 30 || size.height > 1 << 30;
+            match large {
+                true => assert_eq!(got, None),
+                false => assert_eq!(got, want, "{start:?} to {end:?} in {clip:?}"),
+            }
+            taken += usize::from(got.is_some());
+        }
+        assert!(taken > 30_000, "{taken}");
+    }
 }
