@@ -389,7 +389,10 @@ mod tests {
                 (i64::from(i32::MIN) + (r % room) as i64) as i32
             };
             let clip = Rectangle::new(
-                Point::new(corner(size.width, next(1 << 40)), corner(size.height, next(1 << 40))),
+                Point::new(
+                    corner(size.width, next(1 << 40)),
+                    corner(size.height, next(1 << 40)),
+                ),
                 size,
             );
             let mut at = || {
