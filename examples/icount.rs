@@ -564,6 +564,20 @@ mod target {
             let batch = Batch::Lines(&ls[..count]);
             row(&mut counter, FB, RECTS, "lines", label, batch, false);
         }
+        // The same short star centred 2 px inside the screen's right
+        // edge: most lines cut by the clip.
+        let ls: [_; 64] =
+            core::array::from_fn(|k| builtin_scene::edge_star_line(k as i32, 16).stroke(BLUE));
+        let label = "1 px wide, 16 px long, across the screen's edge";
+        row(
+            &mut counter,
+            FB,
+            RECTS,
+            "lines",
+            label,
+            Batch::Lines(&ls),
+            false,
+        );
         for (width, label) in [(3, "3 px wide, 100 px long"), (8, "8 px wide, 100 px long")] {
             let mut ls = [Line::default().stroke(BLUE).stroke_width(width); 16];
             for (k, l) in ls.iter_mut().enumerate() {

@@ -22,10 +22,12 @@
 //!    `DrawTarget`): each pixel once, its pieces walked in masked tiles;
 //! 9. the same 20 segments drawn as separate thick lines;
 //! 10. `.ci/icount`'s 64 lines 1 px wide and 16 px long, in a star;
-//! 11. the built-in scene (`builtin_scene::for_each_command`) from a
+//! 11. the same star across the screen's right edge (`.ci/icount`'s
+//!     "across the screen's edge" row): lines cut by the clip;
+//! 12. the built-in scene (`builtin_scene::for_each_command`) from a
 //!     display list, drawn whole into the framebuffer, as `.ci/icount`'s
 //!     "whole frame" row;
-//! 12. the same list rendered in bands of 16 rows, as its "bands of 16"
+//! 13. the same list rendered in bands of 16 rows, as its "bands of 16"
 //!     row: where the bands' extra instructions go.
 //!
 //! Built for the host, it does nothing.
@@ -151,6 +153,15 @@ mod target {
         });
         begin();
         for line in black_box(&star) {
+            let Ok(()) = black_box(line).draw_spans(black_box(&mut *FB));
+        }
+        end();
+        // The same star across the screen's right edge: clipped lines.
+        let cut: [_; 64] = core::array::from_fn(|k| {
+            super::builtin_scene::edge_star_line(k as i32, 16).stroke(Rgb565::RED)
+        });
+        begin();
+        for line in black_box(&cut) {
             let Ok(()) = black_box(line).draw_spans(black_box(&mut *FB));
         }
         end();

@@ -112,6 +112,15 @@ pub fn star_line(k: i32, len: i32) -> Line {
     Line::new(centre - half, centre + half)
 }
 
+/// [`star_line`] moved right so that its centre lies 2 px inside the
+/// screen's right edge (column 318): all but the vertical lines are cut
+/// by the clip.
+pub fn edge_star_line(k: i32, len: i32) -> Line {
+    let line = star_line(k, len);
+    let right = Point::new(158 - k / 8, 0);
+    Line::new(line.start + right, line.end + right)
+}
+
 /// A small deterministic generator (xorshift32).
 #[derive(Debug, Clone)]
 pub struct Rng(u32);
