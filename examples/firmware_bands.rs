@@ -152,8 +152,8 @@ fn render<'a>(shapes: &'a SceneShapes, list: &mut SceneList<'a>, probe: &mut Pro
     let buffers = core::slice::from_mut(probe);
     match list.render_bands(HEIGHT as u32, buffers, None, &mut output) {
         Ok(()) => Some(hash),
-        // The buffer has `ROWS` rows: never.
-        Err(RenderError::NoRows) => None,
+        // One buffer of `ROWS` rows: never.
+        Err(RenderError::NoRows | RenderError::WidthsDiffer) => None,
         Err(RenderError::Draw(e) | RenderError::Flush(e)) => match e {},
     }
 }

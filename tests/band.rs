@@ -15,7 +15,7 @@ use embedded_graphics::{
     primitives::Rectangle,
 };
 use embedded_raster::{
-    band::{render_in_bands, Command, DisplayList},
+    band::{render_in_bands, Command, DisplayList, RenderError},
     shade::DepthBuffer,
     sim::SimDisplay,
     FillRule, Line, Polygon, Polyline, Triangle, Vertex,
@@ -533,4 +533,43 @@ fn buffers_without_rows_are_an_error() {
     assert_eq!(run(0, &mut []), Ok(()));
     assert_eq!(run(8, &mut [SimDisplay::new(4, 3, Gray8::BLACK)]), Ok(()));
     assert_eq!((calls, sent), (3, 3), "bands drawn and sent");
+}
+
+/// Found by a robustness audit: `render_bands` with buffers of different
+/// widths handed the narrower one spans past its width (the triangles it
+/// continues from band to band were clipped to the first buffer's). It
+/// now refuses them before drawing; `render_in_bands`, which clips each
+/// band to its own buffer, still takes them.
+#[test]
+fn buffers_of_different_widths_are_an_error() {
+    let v = |x: i32, y: i32| Vertex::try_from_num(x, y).unwrap();
+    let mut list = DisplayList::<Rgb888, 4, 16>::new();
+    let t = Triangle::new(v(0, 0), v(20, 0), v(20, 8));
+    list.push(Command::Triangle(t.fill(Rgb888::RED))).unwrap();
+    let mut bufs = [
+        SimDisplay::new(20, 2, Rgb888::BLACK),
+        SimDisplay::new(4, 2, Rgb888::BLACK),
+    ];
+    let sent = core::cell::Cell::new(0);
+    let mut output = |_: &SimDisplay<Rgb888>, _: Rectangle| {
+        sent.set(sent.get() + 1);
+        Ok::<(), ()>(())
+    };
+    let result = list.render_bands(8, &mut bufs, None, &mut output);
+    assert_eq!(result, Err(RenderError::WidthsDiffer));
+    assert_eq!(sent.get(), 0);
+    assert!(bufs.iter().all(|b| b.counts().iter().all(|&c| c == 0)));
+    // No rows to draw: nothing to refuse.
+    assert_eq!(list.render_bands(0, &mut bufs, None, &mut output), Ok(()));
+    // Each band clipped to its own buffer.
+    let result = render_in_bands(
+        8,
+        &mut bufs,
+        None,
+        |band, _| list.draw_band(band, None),
+        &mut output,
+    );
+    assert_eq!(result, Ok(()));
+    assert!(bufs.iter().all(|b| b.out_of_bounds_writes() == 0));
+    assert_eq!(sent.get(), 4);
 }

@@ -49,7 +49,7 @@ use embedded_raster::{
         Gray8Bytes, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
     },
     mesh::{Camera, Rotation, Vec3},
-    sim::{parse_scene, render_scene, render_scene_in_bands, SimDisplay},
+    sim::{parse_scene, render_scene, render_scene_in_bands, render_scene_with, SimDisplay},
     FillRule, Framebuffer, Line, LineAlgorithm, Polygon, Polyline, SpanDrawable, SpanSink,
     SubpixelPrecision, Triangle, TriangleAlgorithm, Vertex,
 };
@@ -584,6 +584,23 @@ fn fuzz_scenes() {
             rendered.stats.pixels_written <= work,
             "{text}: {} > {work}",
             rendered.stats.pixels_written
+        );
+        // The estimate bounds the inexact variants too (`render --algo`).
+        let algo = [
+            TriangleAlgorithm::EdgeWalk,
+            TriangleAlgorithm::BresenhamWalk,
+        ][r.below(2) as usize];
+        let bits = [
+            SubpixelPrecision::Bits0,
+            SubpixelPrecision::Bits4,
+            SubpixelPrecision::Bits12,
+        ][r.below(3) as usize];
+        let variant = render_scene_with(&scene, algo, bits);
+        assert_eq!(variant.display.out_of_bounds_writes(), 0, "{algo:?} {text}");
+        assert!(
+            variant.stats.pixels_written <= work,
+            "{algo:?} at {bits:?}: {text}: {} > {work}",
+            variant.stats.pixels_written
         );
         // Through the band renderer, in bands of a random height: the same
         // image and the same write counts.

@@ -70,3 +70,49 @@ fn algorithms_and_precisions_change_the_pixels_written() {
     let _ = std::fs::remove_file(&scene);
     let _ = std::fs::remove_file(&png);
 }
+
+/// Found by a robustness audit: `--max-pixels` accepted these scenes
+/// with `--algo walk` and `--algo bresenham`, which then wrote more
+/// pixels than the estimate it checks. The walk drifted whole pixels
+/// left of the triangle's vertices over half a million rows; the
+/// Bresenham walk lights the pixels holding the vertices, outside the
+/// box of pixel centres the estimate counted. Each scene, at every
+/// precision, now stays within its estimate (read from the refusal at
+/// `--max-pixels 0`) and is accepted at exactly that limit.
+#[test]
+fn inexact_variants_stay_within_the_estimate() {
+    let dir = std::env::temp_dir();
+    let id = std::process::id();
+    let cases = [
+        (
+            "walk",
+            "size 15 9\ntri 32.440673828125 24.465087890625 25.524658203125 -524288 \
+             13.33251953125 161751.94783922 #bba974\n",
+        ),
+        ("bresenham", "size 64 64\ntri 10 10 20 10 10 11 #ffffff\n"),
+    ];
+    for (k, (algo, text)) in cases.into_iter().enumerate() {
+        let scene = dir.join(format!("estimate-{id}-{k}.scene"));
+        let png = dir.join(format!("estimate-{id}-{k}.png"));
+        std::fs::write(&scene, text).unwrap();
+        let (scene, png) = (scene.to_str().unwrap(), png.to_str().unwrap());
+        for bits in ["0", "4", "8", "12"] {
+            let base = [scene, "-o", png, "--algo", algo, "--bits", bits];
+            let (code, _, err) = run(&[&base[..], &["--max-pixels", "0"]].concat());
+            assert_eq!(code, 1, "{err}");
+            let estimate = err.split("too much work: ").nth(1).unwrap();
+            let estimate = estimate.split(' ').next().unwrap();
+            let (code, out, err) =
+                run(&[&base[..], &["--max-pixels", estimate, "--stats"]].concat());
+            assert_eq!(code, cli::EXIT_OK, "{algo} at {bits} bits: {err}");
+            let written = out.split("\"pixels_written\":").nth(1).unwrap();
+            let written: u64 = written.split(',').next().unwrap().parse().unwrap();
+            let estimate: u64 = estimate.parse().unwrap();
+            assert!(
+                written <= estimate,
+                "{algo} at {bits} bits: {written} > {estimate}"
+            );
+            assert!(written > 0, "{algo} at {bits} bits lit nothing");
+        }
+    }
+}

@@ -540,8 +540,10 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
     /// # Errors
     ///
     /// The first error of a buffer or of `output`, as [`RenderError`];
-    /// [`RenderError::NoRows`], before anything is drawn, if the screen
-    /// has rows and `buffers` is empty or a buffer has none.
+    /// before anything is drawn, if the screen has rows,
+    /// [`RenderError::NoRows`] if `buffers` is empty or a buffer has none,
+    /// and [`RenderError::WidthsDiffer`] if the buffers are not all as
+    /// wide as the first.
     ///
     /// # Examples
     ///
@@ -558,6 +560,10 @@ impl<C: ShadeColor, const N: usize, const P: usize> DisplayList<'_, C, N, P> {
         O: BandOutput<T>,
     {
         let width = buffers.first().map_or(0, |b| b.size().width);
+        // The kept walks are clipped to one width, the screen's.
+        if height > 0 && buffers.iter().any(|b| b.size().width != width) {
+            return Err(RenderError::WidthsDiffer);
+        }
         let screen = Rectangle::new(Point::zero(), Size::new(width, height));
         // Built in place: a walk table is a few KiB of stack.
         let mut walks = Walks::<N> {

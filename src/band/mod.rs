@@ -588,6 +588,13 @@ pub enum RenderError<D, F> {
     /// The screen has rows, and there is no buffer or a buffer has none:
     /// nothing was drawn.
     NoRows,
+    /// The screen has rows, and the buffers given to
+    /// [`DisplayList::render_bands`]
+    /// differ in width: the first gives the screen's, and the triangles
+    /// it continues from band to band are clipped to it. Nothing was
+    /// drawn. ([`render_in_bands`] draws each band clipped to its own
+    /// buffer, and does not return it.)
+    WidthsDiffer,
 }
 
 impl<D: fmt::Display, F: fmt::Display> fmt::Display for RenderError<D, F> {
@@ -596,6 +603,7 @@ impl<D: fmt::Display, F: fmt::Display> fmt::Display for RenderError<D, F> {
             Self::Draw(e) => write!(f, "drawing a band failed: {e}"),
             Self::Flush(e) => write!(f, "sending a band failed: {e}"),
             Self::NoRows => f.write_str("no band buffer with rows to draw the screen in"),
+            Self::WidthsDiffer => f.write_str("band buffers of different widths"),
         }
     }
 }

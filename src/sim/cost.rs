@@ -20,7 +20,7 @@ impl Scene {
     /// |---|---|
     /// | `clear` | `W H` |
     /// | `rect` | the rectangle's area clipped to the target |
-    /// | `tri`, `gtri`, `poly` | the vertices' bounding box (whole pixels) clipped to the target |
+    /// | `tri`, `gtri`, `poly` | the vertices' bounding box grown by half a pixel (whole pixels) clipped to the target |
     /// | `line` | the major-axis extent of the line's bounding box clipped to the target (one pixel per visible step) |
     /// | `polyline` | the sum over its segments, as `line` |
     ///
@@ -60,8 +60,9 @@ impl Command {
     /// use embedded_raster::sim::parse_scene;
     ///
     /// let scene = parse_scene("size 64 64\ntri 0.5 0.5 10 0.5 0.5 -524288 #ffffff\n")?;
-    /// // Columns 0..10, rows 0..1, clipped to the target.
-    /// assert_eq!(scene.commands()[0].pixel_work(Size::new(64, 64)), 10);
+    /// // The box from (0.5, -524288) to (10, 0.5), grown by half a pixel:
+    /// // columns 0..=10 and rows 0..=1 once clipped to the target.
+    /// assert_eq!(scene.commands()[0].pixel_work(Size::new(64, 64)), 22);
     /// # Ok::<(), embedded_raster::sim::SceneError>(())
     /// ```
     pub fn pixel_work(&self, size: Size) -> u64 {
@@ -93,8 +94,12 @@ fn clipped(lo: i64, hi: i64, side: u32) -> u64 {
     u64::try_from(hi - lo).unwrap_or(0)
 }
 
-/// The whole pixels of the vertices' bounding box, clipped: columns
-/// `floor(min x)..ceil(max x)` hold every pixel centre inside the box.
+/// The whole pixels of the vertices' bounding box grown by half a pixel,
+/// clipped: columns `floor(min x - 1/2)..=floor(max x + 1/2)`. They hold
+/// every pixel centre inside the box (all the exact rasterizer can
+/// light) and, as `render --algo` and `--bits` need, every pixel holding a
+/// vertex snapped to a coarser precision (by at most half a pixel), which
+/// the Bresenham walk lights.
 fn box_work(vertices: &[Vertex], size: Size) -> u64 {
     let raw = |f: fn((i32, i32)) -> i32| vertices.iter().map(move |v| i64::from(f(v.raw())));
     let (Some(x0), Some(x1)) = (raw(|r| r.0).min(), raw(|r| r.0).max()) else {
@@ -103,9 +108,9 @@ fn box_work(vertices: &[Vertex], size: Size) -> u64 {
     let (Some(y0), Some(y1)) = (raw(|r| r.1).min(), raw(|r| r.1).max()) else {
         return 0;
     };
-    // 20.12: floor is `>> 12`, ceil `(v + 4095) >> 12`, exact in i64.
-    let w = clipped(x0 >> 12, (x1 + 4095) >> 12, size.width);
-    let h = clipped(y0 >> 12, (y1 + 4095) >> 12, size.height);
+    // 20.12: floor is `>> 12`, half a pixel 2048, exact in i64.
+    let w = clipped((x0 - 2048) >> 12, ((x1 + 2048) >> 12) + 1, size.width);
+    let h = clipped((y0 - 2048) >> 12, ((y1 + 2048) >> 12) + 1, size.height);
     w * h
 }
 

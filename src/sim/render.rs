@@ -370,9 +370,10 @@ pub fn render_scene_in_bands(
         },
     );
     let raster_time = start.elapsed();
-    // A `SimDisplay` cannot fail, and the buffer has a row at least.
+    // A `SimDisplay` cannot fail, the buffer has a row at least, and
+    // `render_in_bands` takes buffers of any width.
     match result {
-        Ok(()) | Err(band::RenderError::NoRows) => {}
+        Ok(()) | Err(band::RenderError::NoRows | band::RenderError::WidthsDiffer) => {}
         Err(band::RenderError::Draw(e) | band::RenderError::Flush(e)) => match e {},
     }
     let stats_all = RenderStats {

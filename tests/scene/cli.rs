@@ -428,9 +428,10 @@ fn issue_12_max_pixels() {
     );
     assert!(!png_file.0.exists() && !pgm_file.0.exists());
 
-    // SCENE costs 24 (clear) + 4 (rect) + 9 (tri's box 3..6 x 0..3).
+    // SCENE costs 24 (clear) + 4 (rect) + 16 (tri's box 3..6 x 0..3
+    // grown by half a pixel: columns 2..=5 and rows 0..=3 once clipped).
     let scene = Temp::with("light.scene", SCENE);
-    for (limit, code) in [("37", 0), ("36", 1), ("0", 1)] {
+    for (limit, code) in [("44", 0), ("43", 1), ("0", 1)] {
         let (got, _, err) = run(&[&scene.arg(), "-o", &png_file.arg(), "--max-pixels", limit]);
         assert_eq!(got, code, "{limit}: {err}");
         assert_eq!(png_file.0.exists(), code == 0, "{limit}");

@@ -69,6 +69,10 @@ pub enum TriangleAlgorithm {
     /// edge. Each edge's positions depend only on the edge (they are
     /// computed from its upper end, also under clipping), so triangles that
     /// share an edge split its pixels without gap or overlap: watertight.
+    /// Each walked position is kept within its edge's x range, where the
+    /// exact edge lies, so that the drift (whole pixels on triangles
+    /// taller than 65,536 px) never carries a pixel past the triangle's
+    /// bounding box.
     EdgeWalk,
     /// Bresenham edge walking: each vertex is moved to the pixel containing
     /// it, and each edge between those pixels is stepped one row at a time

@@ -36,6 +36,9 @@ struct Edge {
     start: i64,
     /// x change per row in 16.16, rounded down.
     slope: i64,
+    /// Its ends' x range in 16.16, where its walked positions are kept.
+    low: i64,
+    high: i64,
 }
 
 impl Edge {
@@ -46,12 +49,24 @@ impl Edge {
         // |dx| < 2^36 units and 0 <= yc - a.1 < 4096: products below 2^48.
         let dx = (b.0 - a.0) << (FRAC - 12);
         let yc = first * 4096 + 2048;
-        let xa = a.0 << (FRAC - 12);
+        let (xa, xb) = (a.0 << (FRAC - 12), b.0 << (FRAC - 12));
         Self {
             first,
             start: xa + (dx * (yc - a.1)).div_euclid(dy),
             slope: (dx * 4096).div_euclid(dy),
+            low: xa.min(xb),
+            high: xa.max(xb),
         }
+    }
+
+    /// A walked position `x` kept within the edge's x range: the drift
+    /// (whole pixels on edges taller than 65,536 px) never carries it
+    /// past the edge's ends, and so never past the triangle's bounding
+    /// box. It depends on the edge alone: two triangles sharing the edge
+    /// keep the same positions, and stay watertight.
+    #[inline(always)]
+    fn kept(&self, x: i64) -> i64 {
+        x.max(self.low).min(self.high)
     }
 
     /// x at row `j >= first`.
@@ -84,17 +99,26 @@ pub(super) fn edge_walk_spans<E>(
             continue;
         }
         let short = Edge::new(a, b);
-        let (mut xl, mut xr) = (long.at(j0), short.at(j0));
-        let (mut dl, mut dr) = (long.slope, short.slope);
-        if !long_left {
-            core::mem::swap(&mut xl, &mut xr);
-            core::mem::swap(&mut dl, &mut dr);
-        }
+        let (left, right) = match long_left {
+            true => (long, short),
+            false => (short, long),
+        };
+        let (mut xl, mut xr) = (left.at(j0), right.at(j0));
+        // The positions move linearly: if both ends of this part's rows
+        // lie within the edges' ranges, every row does, and the rows are
+        // not clamped (the test is loop-invariant).
+        let within =
+            |e: &Edge| e.kept(e.at(j0)) == e.at(j0) && e.kept(e.at(j1 - 1)) == e.at(j1 - 1);
+        let keep = !(within(&left) && within(&right));
         for j in j0..j1 {
             if j > j0 {
-                xl += dl;
-                xr += dr;
+                xl += left.slope;
+                xr += right.slope;
             }
+            let (xl, xr) = match keep {
+                true => (left.kept(xl), right.kept(xr)),
+                false => (xl, xr),
+            };
             // Pixels whose centre i + 1/2 lies in [xl, xr).
             let i0 = ((xl - half_px + one - 1) >> FRAC).max(c.x0);
             let i1 = ((xr - half_px + one - 1) >> FRAC).min(c.x1);
