@@ -147,24 +147,21 @@ mod target {
             let Ok(()) = black_box(line).draw_spans(black_box(FB));
         }
         end();
-        // `.ci/icount`'s 64 star lines 1 px wide and 16 px long.
-        let star: [_; 64] = core::array::from_fn(|k| {
-            super::builtin_scene::star_line(k as i32, 16).stroke(Rgb565::RED)
-        });
-        begin();
-        for line in black_box(&star) {
-            let Ok(()) = black_box(line).draw_spans(black_box(&mut *FB));
+        // `.ci/icount`'s 64 star lines 1 px wide and 16 px long, then the
+        // same star across the screen's right edge (clipped lines): a
+        // window each.
+        let stars: [fn(i32, i32) -> Line; 2] = [
+            super::builtin_scene::star_line,
+            super::builtin_scene::edge_star_line,
+        ];
+        for star in stars {
+            let lines: [_; 64] = core::array::from_fn(|k| star(k as i32, 16).stroke(Rgb565::RED));
+            begin();
+            for line in black_box(&lines) {
+                let Ok(()) = black_box(line).draw_spans(black_box(&mut *FB));
+            }
+            end();
         }
-        end();
-        // The same star across the screen's right edge: clipped lines.
-        let cut: [_; 64] = core::array::from_fn(|k| {
-            super::builtin_scene::edge_star_line(k as i32, 16).stroke(Rgb565::RED)
-        });
-        begin();
-        for line in black_box(&cut) {
-            let Ok(()) = black_box(line).draw_spans(black_box(&mut *FB));
-        }
-        end();
         let shapes: &'static _ = SHAPES.insert(super::builtin_scene::SceneShapes::new());
         let list = LIST.insert(SceneList::new());
         if super::builtin_scene::for_each_command(shapes, |c| list.push(c)).is_err() {
