@@ -238,6 +238,10 @@ impl Canonical {
         Some((line, visible))
     }
 
+    /// The exactly clipped visible part, or `None` if no pixel of the line
+    /// lies inside `clip`; for any line, but lines inside the clip are
+    /// found faster by [`inside`](Self::inside). Out of line: its frame
+    /// is large.
     #[inline(never)]
     pub fn visible(&self, clip: &Rectangle, skip_end: bool) -> Option<Visible> {
         let (lo, hi) = self.major_steps(clip, skip_end)?;
