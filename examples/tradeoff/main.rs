@@ -80,52 +80,7 @@ fn time(mut draw: impl FnMut(&mut Fb) -> u64, tris: usize) -> (f64, u64) {
 /// row (callgrind: 2,534 against 2,197 a 32 px triangle of about 28
 /// rows), rather than the algorithms (BENCHMARKS.md, "Speed for
 /// accuracy").
-///
-/// Each library algorithm is timed through its own copy of the loop
-/// (`draw_lib::<A>`, a type per algorithm): in one copy for all four,
-/// the compiled exact walk changed with the other algorithms' code (its
-/// time at 32 px moved from 104 to 117-128 ns when only `walk`'s code
-/// changed), and the table measured that.
 fn draw_variant(v: Variant, p: SubpixelPrecision, tris: &[Triangle], fb: &mut Fb) -> u64 {
-    match v {
-        Variant::Lib(TriangleAlgorithm::EdgeExact) => draw_lib::<Exact>(p, tris, fb),
-        Variant::Lib(TriangleAlgorithm::Barycentric) => draw_lib::<Barycentric>(p, tris, fb),
-        Variant::Lib(TriangleAlgorithm::EdgeWalk) => draw_lib::<Walk>(p, tris, fb),
-        Variant::Lib(TriangleAlgorithm::BresenhamWalk) => draw_lib::<Bresenham>(p, tris, fb),
-        other => draw_spans_of(other, p, tris, fb),
-    }
-}
-
-/// A library algorithm as a type, for a copy of the timed loop each.
-trait Algorithm {
-    const ALGORITHM: TriangleAlgorithm;
-}
-
-macro_rules! algorithm_types {
-    ($($name:ident => $algorithm:ident),*) => {
-        $(
-            struct $name;
-            impl Algorithm for $name {
-                const ALGORITHM: TriangleAlgorithm = TriangleAlgorithm::$algorithm;
-            }
-        )*
-    };
-}
-
-algorithm_types!(
-    Exact => EdgeExact,
-    Barycentric => Barycentric,
-    Walk => EdgeWalk,
-    Bresenham => BresenhamWalk
-);
-
-#[inline(never)]
-fn draw_lib<A: Algorithm>(p: SubpixelPrecision, tris: &[Triangle], fb: &mut Fb) -> u64 {
-    draw_spans_of(Variant::Lib(A::ALGORITHM), p, tris, fb)
-}
-
-#[inline(always)]
-fn draw_spans_of(v: Variant, p: SubpixelPrecision, tris: &[Triangle], fb: &mut Fb) -> u64 {
     let clip = fb.bounding_box();
     let mut px = 0u64;
     for t in tris {
