@@ -172,8 +172,8 @@ fn banded(
     banded_by(list, rows, buffers, Mode::Resuming)
 }
 
-fn banded_by(
-    list: &DisplayList<'_, Rgb888, 64, 16>,
+fn banded_by<const N: usize>(
+    list: &DisplayList<'_, Rgb888, N, 16>,
     rows: u32,
     buffers: usize,
     mode: Mode,
@@ -349,34 +349,10 @@ fn more_walks_than_slots() {
         .map(|p| display.write_count(p).unwrap())
         .collect();
     for rows in [1, 3, 8] {
-        let (pixels, counts) = banded_96(&list, rows);
+        let (pixels, counts) = banded_by(&list, rows, 1, Mode::Resuming);
         assert_eq!(pixels, display.pixels(), "bands of {rows}");
         assert_eq!(counts, want, "bands of {rows}");
     }
-}
-
-/// [`banded`] for a list of 96 commands, one buffer, no depth.
-fn banded_96(list: &DisplayList<'_, Rgb888, 96, 16>, rows: u32) -> (Vec<Rgb888>, Vec<u32>) {
-    let mut pixels = vec![Rgb888::BLACK; (W * H) as usize];
-    let mut counts = vec![0u32; (W * H) as usize];
-    let mut bufs = [SimDisplay::new(W, rows, Rgb888::BLACK)];
-    let mut seen = vec![0u32; (W * rows) as usize];
-    let mut output = |buffer: &SimDisplay<Rgb888>, area: Rectangle| {
-        for r in 0..area.size.height as i32 {
-            for x in 0..W as i32 {
-                let i = (r as u32 * W + x as u32) as usize;
-                let screen = ((area.top_left.y + r) as u32 * W + x as u32) as usize;
-                let total = buffer.write_count(Point::new(x, r)).unwrap();
-                counts[screen] = total - seen[i];
-                seen[i] = total;
-                pixels[screen] = buffer.pixel(Point::new(x, r)).unwrap();
-            }
-        }
-        assert_eq!(buffer.out_of_bounds_writes(), 0);
-        Ok::<(), ()>(())
-    };
-    list.render_bands(H, &mut bufs, None, &mut output).unwrap();
-    (pixels, counts)
 }
 
 /// A command below the screen lights nothing in any band: no band maps
