@@ -289,7 +289,10 @@ impl Line {
     /// Any `i32` coordinates: 1-pixel lines are exact over the whole `i32`
     /// plane, clipped to the target with work proportional to the visible
     /// pixels; thick lines light no pixel outside the 20.12 range
-    /// (`-524288..=524287`, module docs, "Thick lines"). No input
+    /// (`-524288..=524287`, module docs, "Thick lines"), and a thick line
+    /// with an end past it, or within `w + 4` px of its ends, may leave
+    /// unlit its pixels within `w + 4` px of those ends (its centre line
+    /// is cut there so that its corners stay in range). No input
     /// overflows.
     ///
     /// # Examples
