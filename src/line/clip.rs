@@ -288,8 +288,12 @@ impl Canonical {
     /// ```
     ///
     /// and with `R m = Q2 dminor + R2` (`R m < 2^64` for `m <= dminor`),
-    /// `first(m) = Q m + Q2 + ceil((2 R2 + b - dmajor) / (2 dminor))`,
-    /// whose last numerator lies within `-dmajor..dminor`. Likewise, with
+    /// `first(m) = Q m + Q2 - floor((Q dminor + R - 2 R2 - b) / (2
+    /// dminor))`. That last quotient needs no division: with `Q = 2 H + P`
+    /// (`P` in `0..=1`) it is `H + floor((P dminor + R - 2 R2 - b) / (2
+    /// dminor))`, whose numerator lies strictly between `-2 dminor` and `2
+    /// dminor`, so it is `H - 1` if the numerator is negative, else `H`.
+    /// Likewise, with
     /// `dminor lo = Q3 dmajor + R3`, `m(lo) = Q3 + floor(U / (2 dmajor))`
     /// and its remainder `U mod 2 dmajor` for `U = 2 R3 + dmajor - b`,
     /// which lies within `0..3 dmajor`.
@@ -301,22 +305,19 @@ impl Canonical {
             u64::from(self.minor_step > 0),
         );
         let (mut lo, mut hi) = (u(lo)?, u(hi)?);
-        if let Some(nonzero) = NonZeroU64::new(dmin) {
+        // A line the clip's minor range does not cut needs no quotient.
+        let cut = m_lo > 0 || m_hi < self.dminor;
+        if let Some(nonzero) = NonZeroU64::new(dmin).filter(|_| cut) {
             // Q, R below 2^32.
             let (q, r) = div_rem_u64(dmaj, nonzero);
             // The first step whose offset is at least m, for 1 <= m <=
             // dminor (offset 0 is reached at step 0).
-            let two = NonZeroU64::new(2 * dmin)?;
             let first = |m: u64| {
                 let (q2, r2) = div_rem_u64(r * m, nonzero);
-                // 2 R2 + b <= 2 dminor - 1: the last ceiling is 1 if its
-                // numerator is positive, else minus the floor of its
-                // negation. first(m) >= 1: the offset is 0 at step 0.
-                let whole = q * m + q2;
-                match dmaj.checked_sub(2 * r2 + b) {
-                    Some(minus) => whole.checked_sub(div_rem_u64(minus, two).0),
-                    None => Some(whole + 1),
-                }
+                // Q m + Q2 - H, plus 1 if P dminor + R < 2 R2 + b (both
+                // sides below 2 dminor): at least 1, as first(m) is.
+                let late = (q & 1) * dmin + r < 2 * r2 + b;
+                Some((q * m + q2).checked_sub(q >> 1)? + u64::from(late))
             };
             if m_lo > 0 {
                 lo = lo.max(first(u(m_lo)?)?);
@@ -331,6 +332,11 @@ impl Canonical {
         let (m, d) = match NonZeroU64::new(dmaj) {
             // A single pixel: lo = hi = 0 and dminor = 0.
             None => (0, 0),
+            // The first pixel: the textbook start, U = dmajor - b.
+            Some(_) if lo == 0 => (
+                0,
+                2 * self.dminor - self.dmajor - i64::from(self.minor_step > 0),
+            ),
             Some(nonzero) => {
                 let (q3, r3) = div_rem_u64(dmin * lo, nonzero);
                 let t = 2 * r3 + dmaj - b;
@@ -432,5 +438,162 @@ mod tests {
             taken += usize::from(got.is_some());
         }
         assert!(taken > 30_000, "{taken}");
+    }
+
+    /// The visible part by the formulas of the module docs evaluated
+    /// directly in `i128`: the canonical form from the ends, `m(k)` and
+    /// `D(k)` at each step, and the visible steps found by binary search
+    /// over `m`, which is non-decreasing (no closed form). Returns the
+    /// first and last major coordinate, the first minor coordinate, the
+    /// decision there (`None` for a single pixel, which is never stepped)
+    /// and the minor bound.
+    fn reference(
+        start: Point,
+        end: Point,
+        clip: &Rectangle,
+        skip_end: bool,
+    ) -> Option<(i128, i128, i128, Option<i128>, i128)> {
+        let (sx, sy, ex, ey) = (
+            i128::from(start.x),
+            i128::from(start.y),
+            i128::from(end.x),
+            i128::from(end.y),
+        );
+        let x_major = (ex - sx).abs() >= (ey - sy).abs();
+        let ((a0, a1), (n0, n1)) = match x_major {
+            true => ((sx, ex), (sy, ey)),
+            false => ((sy, ey), (sx, ex)),
+        };
+        // From the end with the smaller major coordinate.
+        let ((major0, minor0), (major1, minor1)) = match a1 < a0 {
+            true => ((a1, n1), (a0, n0)),
+            false => ((a0, n0), (a1, n1)),
+        };
+        let (dmaj, step) = (major1 - major0, if minor1 < minor0 { -1 } else { 1 });
+        let dmin = (minor1 - minor0) * step;
+        let b = i128::from(step > 0);
+        let m = |k: i128| match dmaj {
+            0 => 0,
+            _ => (2 * dmin * k + dmaj - b).div_euclid(2 * dmaj),
+        };
+        let bounds =
+            |first: i32, len: u32| (i128::from(first), i128::from(first) + i128::from(len) - 1);
+        let (bx, by) = (
+            bounds(clip.top_left.x, clip.size.width),
+            bounds(clip.top_left.y, clip.size.height),
+        );
+        let ((c0, c1), (d0, d1)) = if x_major { (bx, by) } else { (by, bx) };
+        // Steps inside the clip's major range, and the end skipped.
+        let mut lo = (c0 - major0).max(0);
+        let mut hi = (c1 - major0).min(dmaj);
+        if skip_end {
+            match a1 < a0 {
+                true => lo = lo.max(1),
+                false => hi = hi.min(dmaj - 1),
+            }
+        }
+        // The clip's minor range as offsets along the minor direction.
+        let (o0, o1) = match step > 0 {
+            true => (d0 - minor0, d1 - minor0),
+            false => (minor0 - d1, minor0 - d0),
+        };
+        // The first step of lo..=hi + 1 where `past` holds (m rises).
+        let first = |past: &dyn Fn(i128) -> bool| {
+            let (mut x, mut y) = (lo, hi + 1);
+            while x < y {
+                let mid = x + (y - x) / 2;
+                if past(mid) {
+                    y = mid;
+                } else {
+                    x = mid + 1;
+                }
+            }
+            x
+        };
+        if lo > hi {
+            return None;
+        }
+        let (lo2, hi2) = (first(&|k| m(k) >= o0), first(&|k| m(k) > o1) - 1);
+        if lo2 > hi2 {
+            return None;
+        }
+        let decision =
+            (dmaj > 0).then(|| 2 * dmin * lo2 + dmaj - b - 2 * dmaj * m(lo2) + 2 * dmin - 2 * dmaj);
+        Some((
+            major0 + lo2,
+            major0 + hi2,
+            minor0 + step * m(lo2),
+            decision,
+            minor0 + step * o1.min(dmin),
+        ))
+    }
+
+    /// [`Canonical::visible`] against [`reference`]: lines with ends
+    /// anywhere in `i32`, near clips of every size (empty ones and ones
+    /// reaching past `i32::MAX` included), with and without the end pixel.
+    /// (The pixels themselves are checked against the line reference in
+    /// `tests/line.rs`.)
+    #[test]
+    fn visible_matches_the_formulas() {
+        let mut random = crate::raster::xorshift(0x6A09_E667_F3BC_C909);
+        let mut next = |n: u64| random.next().unwrap_or(0) % n;
+        let (mut seen, mut cut) = (0, 0);
+        for case in 0..200_000u64 {
+            let side = |bits: u64| match bits {
+                0 => 0,
+                1 => u32::MAX,
+                b => (1u64 << (b % 33)).min(u64::from(u32::MAX)) as u32,
+            };
+            let size = Size::new(side(next(40)), side(next(40)));
+            let any = |r: u64| (r as u32) as i32;
+            let clip = Rectangle::new(Point::new(any(next(1 << 32)), any(next(1 << 32))), size);
+            // Near the clip: within three of its sides of its corner.
+            let near = |first: i32, len: u32, r: u64| {
+                let span = 3 * u64::from(len.max(2));
+                let off =
+                    i64::try_from(r % (2 * span)).unwrap_or(0) - i64::try_from(span).unwrap_or(0);
+                let v = i64::from(first) + off;
+                v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
+            };
+            let at = |next: &mut dyn FnMut(u64) -> u64| match next(5) {
+                0 => Point::new(any(next(1 << 32)), any(next(1 << 32))),
+                _ => Point::new(
+                    near(clip.top_left.x, size.width, next(1 << 40)),
+                    near(clip.top_left.y, size.height, next(1 << 40)),
+                ),
+            };
+            let start = at(&mut next);
+            let end = match next(3) {
+                0 => Point::new(
+                    start.x.saturating_add(next(9) as i32 - 4),
+                    start.y.saturating_add(next(9) as i32 - 4),
+                ),
+                _ => at(&mut next),
+            };
+            let skip_end = case % 2 == 0;
+            let c = Canonical::new(start, end);
+            let got = c.visible(&clip, skip_end).map(|v| {
+                let single = v.first_major == v.last_major && c.dmajor == 0;
+                (
+                    i128::from(v.first_major),
+                    i128::from(v.last_major),
+                    i128::from(v.first_minor),
+                    (!single).then_some(i128::from(v.decision)),
+                    i128::from(v.minor_bound),
+                )
+            });
+            let want = reference(start, end, &clip, skip_end);
+            assert_eq!(
+                got, want,
+                "{start:?} to {end:?} in {clip:?}, skip_end {skip_end}"
+            );
+            seen += usize::from(got.is_some());
+            let whole = (
+                i128::from(c.major0),
+                i128::from(c.major0) + i128::from(c.dmajor),
+            );
+            cut += usize::from(got.is_some_and(|g| (g.0, g.1) != whole));
+        }
+        assert!(seen > 25_000 && cut > 20_000, "{seen} {cut}");
     }
 }
