@@ -496,8 +496,8 @@ impl RunSource for Exact {
 /// [`stroke_width`](Self::stroke_width) makes a [`ThickLine`] and
 /// [`algorithm`](Self::algorithm) a [`StyledLineVariant`]: separate types,
 /// so that firmware drawing only exact 1-pixel lines links neither the
-/// thick lines (about 17 KiB of flash at `opt-level = "s"` on a
-/// Cortex-M4) nor the variants.
+/// thick lines (their polygon fill, 64-bit edge setup and integer square
+/// root) nor the variants.
 ///
 /// # Examples
 ///
