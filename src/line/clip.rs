@@ -180,7 +180,11 @@ impl Canonical {
         if !(within(start) && within(end)) {
             return None;
         }
-        // Both ends in the clip: |dx|, |dy| < 2^30.
+        // Both ends in the clip: |dx|, |dy| < 2^30. The canonical form is
+        // taken here in `i32` rather than from `new` (in `i64`): `new`
+        // rewritten in `u32` by `abs_diff` and called from here cost each
+        // line inside the clip 13 more instructions on a Cortex-M4
+        // (`.ci/itrace`, 64 lines of 16 px: 28,896 → 29,712).
         let (dx, dy) = (end.x - start.x, end.y - start.y);
         let x_major = dx.abs() >= dy.abs();
         let (dmaj, dmin) = if x_major { (dx, dy) } else { (dy, dx) };
