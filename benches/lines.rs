@@ -1,6 +1,7 @@
 //! 1-pixel lines on a 320 x 240 Rgb565 framebuffer: this crate's exact
 //! Bresenham line, its DDA and naive variants, and embedded-graphics 0.8's
-//! `Line` with a 1-pixel stroke on the same framebuffer. Thick polylines
+//! `Line` with a 1-pixel stroke on the same framebuffer, on short lines,
+//! long lines and random lines that the screen's edges cut. Thick polylines
 //! 8 px wide: joined strokes (miter, round), the same segments as
 //! separate thick lines (overlapping, no joins), and embedded-graphics'
 //! `Polyline` with an 8 px stroke.
@@ -78,6 +79,33 @@ fn long() -> Vec<(Point, Point)> {
             }
         })
         .collect()
+}
+
+/// 256 lines with ends anywhere in a box of three screens by three
+/// around the screen, each with at least one end off the screen and
+/// some pixels on it: lines the clip cuts, at every slope and length.
+fn cut() -> Vec<(Point, Point)> {
+    let mut rng = Rng(13);
+    let screen = Rectangle::new(Point::zero(), Size::new(W as u32, H as u32));
+    let mut lines = Vec::new();
+    while lines.len() < 256 {
+        let mut end = || Point::new(rng.below(3 * W) - W, rng.below(3 * H) - H);
+        let (a, b) = (end(), end());
+        if screen.contains(a) && screen.contains(b) {
+            continue;
+        }
+        let mut lit = false;
+        Line::new(a, b)
+            .for_each_run(&screen, |_| {
+                lit = true;
+                Ok::<(), ()>(())
+            })
+            .unwrap();
+        if lit {
+            lines.push((a, b));
+        }
+    }
+    lines
 }
 
 fn bench_set(c: &mut Criterion, name: &str, lines: &[(Point, Point)]) {
@@ -192,6 +220,7 @@ fn thick_polylines(c: &mut Criterion) {
 fn lines(c: &mut Criterion) {
     bench_set(c, "lines 8 px", &short());
     bench_set(c, "lines 300 px", &long());
+    bench_set(c, "lines cut", &cut());
     thick_polylines(c);
 }
 

@@ -12,7 +12,7 @@ import sys
 
 TARGET = os.environ.get("CARGO_TARGET_DIR") or pathlib.Path(__file__).resolve().parent.parent / "target"
 ROOT = pathlib.Path(TARGET) / "criterion"
-GROUPS = ["lines 8 px", "lines 300 px"]
+GROUPS = ["lines 8 px", "lines 300 px", "lines cut"]
 PEERS = ["bresenham", "dda", "naive", "embedded-graphics"]
 
 

@@ -24,10 +24,13 @@
 //! 10. `.ci/icount`'s 64 lines 1 px wide and 16 px long, in a star;
 //! 11. the same star across the screen's right edge (`.ci/icount`'s
 //!     "across the screen's edge" row): lines cut by the clip;
-//! 12. the built-in scene (`builtin_scene::for_each_command`) from a
+//! 12. 64 random lines 1 px wide that the screen's edges cut
+//!     (`builtin_scene::cut_line`): every slope and length, cut on any
+//!     side, as the host bench's "lines cut";
+//! 13. the built-in scene (`builtin_scene::for_each_command`) from a
 //!     display list, drawn whole into the framebuffer, as `.ci/icount`'s
 //!     "whole frame" row;
-//! 13. the same list rendered in bands of 16 rows, as its "bands of 16"
+//! 14. the same list rendered in bands of 16 rows, as its "bands of 16"
 //!     row: where the bands' extra instructions go.
 //!
 //! Built for the host, it does nothing.
@@ -162,6 +165,14 @@ mod target {
             }
             end();
         }
+        let mut rng = super::builtin_scene::Rng::new(0x2545_F491);
+        let cut: [_; 64] =
+            core::array::from_fn(|_| super::builtin_scene::cut_line(&mut rng).stroke(Rgb565::RED));
+        begin();
+        for line in black_box(&cut) {
+            let Ok(()) = black_box(line).draw_spans(black_box(&mut *FB));
+        }
+        end();
         let shapes: &'static _ = SHAPES.insert(super::builtin_scene::SceneShapes::new());
         let list = LIST.insert(SceneList::new());
         if super::builtin_scene::for_each_command(shapes, |c| list.push(c)).is_err() {

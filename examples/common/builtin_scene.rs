@@ -121,6 +121,22 @@ pub fn edge_star_line(k: i32, len: i32) -> Line {
     Line::new(line.start + right, line.end + right)
 }
 
+/// A random line the screen's edges cut: ends anywhere in a box of three
+/// screens by three centred on the screen, at least one of them off it,
+/// and some pixel on it (lines that miss the screen are drawn again from
+/// `rng`). Every slope and length, cut on any side.
+pub fn cut_line(rng: &mut Rng) -> Line {
+    let (w, h) = (WIDTH as i32, HEIGHT as i32);
+    loop {
+        let mut end = || Point::new(w / 2 + rng.signed(3 * w / 2), h / 2 + rng.signed(3 * h / 2));
+        let line = Line::new(end(), end());
+        let lit = line.for_each_run(&SCREEN, |_| Err(())).is_err();
+        if lit && !(SCREEN.contains(line.start) && SCREEN.contains(line.end)) {
+            return line;
+        }
+    }
+}
+
 /// A small deterministic generator (xorshift32).
 #[derive(Debug, Clone)]
 pub struct Rng(u32);
