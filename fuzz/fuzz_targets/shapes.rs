@@ -1,0 +1,36 @@
+//! Triangles, polygons, lines and polylines at `i32` and 20.12 extremes,
+//! and the mesh arithmetic, from libFuzzer's bytes: the first byte picks
+//! the kind, the rest are its choices (`tests/common/fuzz_cases.rs`). Each
+//! is checked against the exact references of `tests/common` on every
+//! framebuffer format and on a `SimDisplay`, with overflow checks on.
+#![no_main]
+// Each target uses a part of the shared test files.
+#![allow(dead_code)]
+
+#[path = "../../tests/common/mod.rs"]
+mod common;
+#[path = "../../tests/common/fuzz_cases.rs"]
+mod fuzz_cases;
+#[path = "../../tests/common/line_ref.rs"]
+mod line_ref;
+#[path = "tape.rs"]
+mod rng;
+#[path = "../../tests/common/view.rs"]
+mod view;
+
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| {
+    let Some((&kind, choices)) = data.split_first() else {
+        return;
+    };
+    let mut r = rng::Rng::new(choices);
+    match kind % 4 {
+        0 => fuzz_cases::triangle(&mut r),
+        1 => fuzz_cases::polygon(&mut r),
+        2 => {
+            fuzz_cases::line_and_polyline(&mut r);
+        }
+        _ => fuzz_cases::mesh(&mut r),
+    }
+});
