@@ -5,21 +5,9 @@
 //! replaced). Scenes over 256 x 256 px are only parsed, so that each input
 //! stays fast.
 #![no_main]
-// Each target uses a part of the shared test files.
-#![allow(dead_code)]
-
-#[path = "../../tests/common/mod.rs"]
-mod common;
-#[path = "../../tests/common/fuzz_cases.rs"]
-mod fuzz_cases;
-#[path = "../../tests/common/line_ref.rs"]
-mod line_ref;
-#[path = "tape.rs"]
-mod rng;
-#[path = "../../tests/common/view.rs"]
-mod view;
 
 use embedded_raster::sim::parse_scene;
+use embedded_raster_fuzz::{fuzz_cases, rng};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

@@ -4,20 +4,8 @@
 //! is checked against the exact references of `tests/common` on every
 //! framebuffer format and on a `SimDisplay`, with overflow checks on.
 #![no_main]
-// Each target uses a part of the shared test files.
-#![allow(dead_code)]
 
-#[path = "../../tests/common/mod.rs"]
-mod common;
-#[path = "../../tests/common/fuzz_cases.rs"]
-mod fuzz_cases;
-#[path = "../../tests/common/line_ref.rs"]
-mod line_ref;
-#[path = "tape.rs"]
-mod rng;
-#[path = "../../tests/common/view.rs"]
-mod view;
-
+use embedded_raster_fuzz::{fuzz_cases, rng};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
