@@ -1,13 +1,17 @@
 //! Band rendering against the whole frame: for random display lists of
 //! every command (including depth), any band height gives the same pixels
 //! and the same write count per pixel as drawing the list on one
-//! whole-screen target, at every band boundary.
+//! whole-screen target, at every band boundary. A `Band` alone takes
+//! every kind of write (each `DrawTarget` and `SpanSink` method, and
+//! shapes by `draw` and `draw_spans`) as the screen does, in its rows.
 #![cfg(feature = "sim")]
 
 #[path = "common/rng.rs"]
 mod rng;
 #[path = "common/view.rs"]
 mod view;
+#[path = "common/writes.rs"]
+mod writes;
 
 use embedded_graphics::{
     pixelcolor::{Rgb888, RgbColor},
@@ -548,4 +552,53 @@ fn buffers_of_different_widths_are_an_error() {
     assert_eq!(result, Ok(()));
     assert!(bufs.iter().all(|b| b.out_of_bounds_writes() == 0));
     assert_eq!(sent.get(), 4);
+}
+
+/// A band of a 40 x 30 screen, `Gray8`, takes random writes of every kind
+/// (`tests/common/writes.rs`, in screen coordinates) as the whole screen
+/// does: its rows end equal to the screen's rows it stands for, and the
+/// target's rows past a `limited_to` band stay untouched. Each case is up
+/// to 6 writes to a band of 7 rows anywhere in the screen, limited now
+/// and then.
+#[test]
+fn a_band_takes_every_write_as_the_screen_does() {
+    use embedded_graphics::pixelcolor::Gray8;
+    use embedded_raster::{
+        band::Band,
+        framebuffer::{buffer_size, Gray8Bytes},
+        Framebuffer,
+    };
+    type Screen = Framebuffer<Gray8Bytes, 40, 30, { buffer_size::<Gray8Bytes>(40, 30) }>;
+    type Rows = Framebuffer<Gray8Bytes, 40, 7, { buffer_size::<Gray8Bytes>(40, 7) }>;
+    let size = Size::new(40, 30);
+    let mut rng = Rng(0xba4d_5eed_0000_0001);
+    for case in 0..2000 {
+        let top = rng.below(24) as i32;
+        let limit = match rng.below(4) {
+            0 => 1 + rng.below(7) as u32,
+            _ => 7,
+        };
+        let (mut screen, mut rows) = (Screen::new(), Rows::new());
+        let mut writes = vec![];
+        for _ in 0..1 + rng.below(6) {
+            let mut twin = Rng(rng.0);
+            writes.push(writes::random_write(&mut rng, &mut screen, size));
+            let mut band = Band::new(&mut rows, top).limited_to(limit);
+            writes::random_write(&mut twin, &mut band, size);
+            assert_eq!(twin.0, rng.0, "the same choices");
+        }
+        for y in 0..7 {
+            for x in 0..40 {
+                let got = rows.pixel(Point::new(x, y));
+                let want = match y < limit as i32 {
+                    true => screen.pixel(Point::new(x, top + y)),
+                    false => Some(Gray8::BLACK),
+                };
+                assert_eq!(
+                    got, want,
+                    "case {case}: band at {top}, {limit} rows, ({x}, {y}): {writes:#?}"
+                );
+            }
+        }
+    }
 }

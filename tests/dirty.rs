@@ -1,57 +1,24 @@
-//! `DirtyRows`: after random drawing, a flush sends every pixel that
+//! `DirtyRows`: after random writes of every kind (each `DrawTarget` and
+//! `SpanSink` method, and shapes by `draw` and `draw_spans`), a flush sends every pixel that
 //! changed (the display ends equal to the framebuffer), sends nothing
 //! outside the region it reports, and leaves nothing to send.
 #![cfg(feature = "sim")]
 
 #[path = "common/rng.rs"]
 mod rng;
+#[path = "common/writes.rs"]
+mod writes;
 
 use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
 use embedded_raster::{
     band::DirtyRows,
     framebuffer::{buffer_size, Gray8Bytes},
     sim::SimDisplay,
-    Framebuffer, Line, SpanDrawable, Triangle, Vertex,
+    Framebuffer,
 };
 use rng::Rng;
 
 type Fb = Framebuffer<Gray8Bytes, 40, 30, { buffer_size::<Gray8Bytes>(40, 30) }>;
-
-fn random_drawing(rng: &mut Rng, screen: &mut DirtyRows<Fb, 30>) {
-    let point = |rng: &mut Rng| Point::new(rng.below(60) as i32 - 10, rng.below(50) as i32 - 10);
-    let luma = Gray8::new(1 + rng.below(255) as u8);
-    match rng.below(4) {
-        0 => {
-            let area = Rectangle::new(
-                point(rng),
-                Size::new(rng.below(12) as u32, rng.below(12) as u32),
-            );
-            screen.fill_solid(&area, luma).unwrap();
-        }
-        1 => {
-            // Through `DrawTarget`, or whole through `SpanSink::fill_line`.
-            let (a, b) = (point(rng), point(rng));
-            let line = Line::new(a, b).stroke(luma);
-            match rng.below(2) {
-                0 => line.draw(screen).unwrap(),
-                _ => line.draw_spans(screen).unwrap(),
-            }
-        }
-        2 => {
-            let v = |rng: &mut Rng| {
-                Vertex::from_raw(rng.below(50 * 4096) as i32, rng.below(40 * 4096) as i32)
-            };
-            Triangle::new(v(rng), v(rng), v(rng))
-                .fill(luma)
-                .draw(screen)
-                .unwrap();
-        }
-        _ => {
-            let pixels: Vec<_> = (0..5).map(|_| Pixel(point(rng), luma)).collect();
-            screen.draw_iter(pixels).unwrap();
-        }
-    }
-}
 
 #[test]
 fn flush_sends_exactly_the_changed_region() {
@@ -61,7 +28,7 @@ fn flush_sends_exactly_the_changed_region() {
     for round in 0..300 {
         let before = screen.target().clone();
         for _ in 0..1 + rng.below(4) {
-            random_drawing(&mut rng, &mut screen);
+            writes::random_write(&mut rng, &mut screen, Size::new(40, 30));
         }
         let changed: Vec<Rectangle> = screen.changed().collect();
         // Every pixel that differs from before lies in a reported rectangle.
