@@ -7,8 +7,16 @@
 //! here in `i64`; a span cannot end past `i32::MAX`, so the last column
 //! of the range is out of reach (the documented limit).
 //!
+//! `DrawTargetSink` passes every kind of write on to its target: the same
+//! pixels as the framebuffer's own `SpanSink` and `DrawTarget` give.
+//!
 //! Case counts follow `PROPTEST_CASES` (proptest's default, 256, when
 //! unset).
+
+#[path = "common/rng.rs"]
+mod rng;
+#[path = "common/writes.rs"]
+mod writes;
 
 use std::convert::Infallible;
 
@@ -119,4 +127,39 @@ fn a_whole_range_column_lights_the_rows_of_the_bounds() {
     let rows: Vec<i32> = sink.spans.iter().map(|s| s.y).collect();
     assert_eq!(rows, [i32::MAX - 3, i32::MAX - 2, i32::MAX - 1, i32::MAX]);
     assert!(sink.spans.iter().all(|s| (s.x_start, s.x_end) == (6, 7)));
+}
+
+/// Random writes of every kind (`tests/common/writes.rs`) through a
+/// `DrawTargetSink` on a framebuffer, which turns spans, columns and
+/// rectangles into `fill_solid` and passes the `DrawTarget` methods on,
+/// leave the same pixels as the same writes on the framebuffer itself,
+/// whose `SpanSink` writes its bytes directly.
+#[test]
+fn a_draw_target_sink_passes_every_write_on() {
+    use embedded_raster::{
+        framebuffer::{buffer_size, Gray8Bytes},
+        DrawTargetSink, Framebuffer,
+    };
+    type Fb = Framebuffer<Gray8Bytes, 40, 30, { buffer_size::<Gray8Bytes>(40, 30) }>;
+    let size = Size::new(40, 30);
+    let mut rng = rng::Rng(0x5151_0000_0000_0001);
+    for case in 0..1000 {
+        let (mut direct, mut wrapped) = (Fb::new(), Fb::new());
+        let mut done = vec![];
+        for _ in 0..1 + rng.below(6) {
+            let mut twin = rng::Rng(rng.0);
+            done.push(writes::random_write(&mut rng, &mut direct, size));
+            writes::random_write(&mut twin, &mut DrawTargetSink::new(&mut wrapped), size);
+        }
+        for y in 0..30 {
+            for x in 0..40 {
+                let p = Point::new(x, y);
+                assert_eq!(
+                    wrapped.pixel(p),
+                    direct.pixel(p),
+                    "case {case}: {p:?}: {done:#?}"
+                );
+            }
+        }
+    }
 }
