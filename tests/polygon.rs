@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{add_spans_from, reference_fill, Grid};
+use common::{add_spans_from, assert_same, reference_fill, Grid};
 use embedded_graphics_core::{
     geometry::{Point, Size},
     pixelcolor::Rgb565,
@@ -48,16 +48,6 @@ fn triangulated(poly: &[Vertex], x0: i64, y0: i64, w: usize, h: usize) -> Grid {
         .triangulate(|t| common::add_spans(&t, &mut g))
         .unwrap();
     g
-}
-
-fn assert_same(got: &Grid, want: &Grid, what: &str) {
-    let d = got.diff(want);
-    assert!(
-        d.is_empty(),
-        "{what}: {} pixels differ (x, y, got, want): {:?}",
-        d.len(),
-        &d[..d.len().min(10)]
-    );
 }
 
 prop_compose! {
@@ -255,9 +245,9 @@ proptest! {
         let (cx, cy) = poly[0].raw();
         let (x0, y0) = ((i64::from(cx) >> 12) - 40, (i64::from(cy) >> 12) - 40);
         let tri = triangulated(&poly, x0, y0, 80, 80);
-        assert_same(&tri, &scanline(&poly, false, x0, y0, 80, 80), "non-zero");
-        assert_same(&tri, &scanline(&poly, true, x0, y0, 80, 80), "even-odd");
-        assert_same(&tri, &reference_fill(&poly, false, x0, y0, 80, 80), "reference");
+        assert_same(&tri, &scanline(&poly, false, x0, y0, 80, 80), &"non-zero");
+        assert_same(&tri, &scanline(&poly, true, x0, y0, 80, 80), &"even-odd");
+        assert_same(&tri, &reference_fill(&poly, false, x0, y0, 80, 80), &"reference");
     }
 
     #[test]
@@ -418,8 +408,12 @@ fn pentagram_even_odd_leaves_the_centre_empty() {
     assert_eq!((nz.get(16, 18), eo.get(16, 18)), (1, 0));
     // A point of the star is wound once: filled under both.
     assert_eq!((nz.get(16, 5), eo.get(16, 5)), (1, 1));
-    assert_same(&nz, &reference_fill(&star, false, 0, 0, 32, 32), "non-zero");
-    assert_same(&eo, &reference_fill(&star, true, 0, 0, 32, 32), "even-odd");
+    assert_same(
+        &nz,
+        &reference_fill(&star, false, 0, 0, 32, 32),
+        &"non-zero",
+    );
+    assert_same(&eo, &reference_fill(&star, true, 0, 0, 32, 32), &"even-odd");
 }
 
 #[test]
@@ -711,7 +705,7 @@ fn issue_12_edge_across_the_whole_range() {
         assert_same(
             &scanline(&poly, even_odd, 0, 0, 8, 8),
             &reference_fill(&poly, even_odd, 0, 0, 8, 8),
-            "reproducer",
+            &"reproducer",
         );
     }
 }

@@ -20,7 +20,9 @@ use embedded_raster::{
     SubpixelPrecision, Triangle, TriangleAlgorithm, Vertex,
 };
 
-use super::common::{add_spans_from, rasterized, reference_fill, reference_triangle, Grid};
+use super::common::{
+    add_spans_from, assert_same, rasterized, reference_fill, reference_triangle, Grid,
+};
 use super::line_ref::{ideal_minor, reference, Window};
 use super::rng::Rng;
 use super::view::View;
@@ -202,16 +204,6 @@ impl Target {
     ) {
         draw_with!(self, c, draw_spans, s)
     }
-}
-
-fn assert_same(got: &Grid, want: &Grid, what: &dyn std::fmt::Debug) {
-    let d = got.diff(want);
-    assert!(
-        d.is_empty(),
-        "{what:?}: {} pixels differ: {:?}",
-        d.len(),
-        &d[..d.len().min(8)]
-    );
 }
 
 /// A triangle anywhere, against the reference in a window on it and on

@@ -56,6 +56,18 @@ pub fn winding(poly: &[(i128, i128)], p: (i128, i128)) -> i32 {
     wn
 }
 
+/// Panics, naming `what` and the first pixels that differ, unless `got`
+/// and `want` are the same grid.
+pub fn assert_same(got: &Grid, want: &Grid, what: &dyn core::fmt::Debug) {
+    let d = got.diff(want);
+    assert!(
+        d.is_empty(),
+        "{what:?}: {} pixels differ (x, y, got, want): {:?}",
+        d.len(),
+        &d[..d.len().min(10)]
+    );
+}
+
 /// Raw coordinates of the centre of pixel `(i, j)`.
 pub fn centre(i: i64, j: i64) -> (i128, i128) {
     (i128::from(i) * 4096 + 2048, i128::from(j) * 4096 + 2048)
