@@ -76,7 +76,7 @@ pub(crate) fn monotone_spans<E>(
     // Tested on the vertices' own heights, before any frame: a polygon
     // that takes the edge table sets its frame up only there.
     if let Shape::Polygon = shape {
-        if !y_monotone(vertices.len(), |k| vertices[k].raw().1) {
+        if !y_monotone(vertices) {
             return None;
         }
     }
