@@ -80,7 +80,7 @@ pub(crate) fn monotone_spans<E>(
             return None;
         }
     }
-    let Some(frame) = Frame::around(vertices, clip) else {
+    let Some((frame, small)) = Frame::around_and_whether_small(vertices, clip) else {
         return Some(Ok(()));
     };
     // A polygon reaching 2^29 raw units (131,072 px) from its frame's
@@ -89,7 +89,7 @@ pub(crate) fn monotone_spans<E>(
     if !frame.fits_i32() {
         return None;
     }
-    walk_monotone(&frame, vertices, shape, &mut by_numbers_ref(emit))
+    walk_monotone(&frame, small, vertices, shape, &mut by_numbers_ref(emit))
 }
 
 /// [`monotone_spans`] in `i32`, for a y-monotone polygon (or a
@@ -97,6 +97,7 @@ pub(crate) fn monotone_spans<E>(
 /// a parallelogram does not have four corners.
 fn walk_monotone<E>(
     frame: &Frame,
+    small: bool,
     vertices: &[Vertex],
     shape: Shape,
     emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
@@ -113,6 +114,7 @@ fn walk_monotone<E>(
         at: top,
         left: n,
         forwards,
+        small,
     };
     Some(match shape {
         // Either chain on either side: the lesser threshold and the greater
@@ -143,6 +145,10 @@ struct Chain<F> {
     /// Edges not yet looked at: the chain ends after all of them at most.
     left: usize,
     forwards: bool,
+    /// Whether the frame is small
+    /// ([`Frame::around_and_whether_small`]): the edges are then set up
+    /// by [`Edge::new_small`], unchecked.
+    small: bool,
 }
 
 impl<F: Fn(usize) -> (i32, i32)> Iterator for Chain<F> {
@@ -163,7 +169,11 @@ impl<F: Fn(usize) -> (i32, i32)> Iterator for Chain<F> {
                 // Past the bottom vertex.
                 self.left = 0;
             } else if a.1 < b.1 {
-                if let Some(edge) = Edge::new(a, b, 0) {
+                let edge = match self.small {
+                    true => Edge::new_small(a, b),
+                    false => Edge::new(a, b, 0),
+                };
+                if let Some(edge) = edge {
                     return Some(edge);
                 }
             }

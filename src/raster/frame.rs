@@ -75,6 +75,26 @@ impl Frame {
     /// no pixel centre of `clip` lies in their bounding box.
     #[inline]
     pub(crate) fn around(vertices: &[Vertex], clip: &Rectangle) -> Option<Self> {
+        Self::around_and_whether_small(vertices, clip).map(|(frame, _)| frame)
+    }
+
+    /// [`around`](Self::around), and whether every edge of the shape may
+    /// be set up by [`Edge::new_small`](super::edge::Edge::new_small) from
+    /// its vertices' relative coordinates: the shape's box spans under
+    /// [`SMALL`] raw units a side, and the clip does not cut its top row.
+    ///
+    /// Then every relative coordinate and every difference of two lies
+    /// within `-SMALL..SMALL` (the origin's centre lies in the box, see
+    /// [`of_box`](Self::of_box)), and every vertex lies less than a row
+    /// above the origin's centre (the origin's row is the first whose
+    /// centre is at or below the box's top), so that no edge starts above
+    /// the frame's first row. A separate answer, not a field of the
+    /// frame: the shapes that do not ask for it store nothing more.
+    #[inline(always)]
+    pub(crate) fn around_and_whether_small(
+        vertices: &[Vertex],
+        clip: &Rectangle,
+    ) -> Option<(Self, bool)> {
         let (mut lo, mut hi) = ((i32::MAX, i32::MAX), (i32::MIN, i32::MIN));
         for v in vertices {
             let (x, y) = v.raw();
@@ -148,14 +168,16 @@ impl Frame {
         Some((frame, [relative(a), relative(b), relative(c)]))
     }
 
-    /// The frame of the box `lo..=hi` (raw) inside `clip`.
+    /// The frame of the box `lo..=hi` (raw) inside `clip`, and whether it
+    /// is small ([`around_and_whether_small`](Self::around_and_whether_small)).
     #[inline(always)]
-    fn of_box(lo: (i32, i32), hi: (i32, i32), clip: &Rectangle) -> Option<Self> {
+    fn of_box(lo: (i32, i32), hi: (i32, i32), clip: &Rectangle) -> Option<(Self, bool)> {
         // Pixels lie within +-(2^19 + 1): saturating the clip's far edge at
         // i32::MAX changes nothing.
         let end = |start: i32, len: u32| start.saturating_add_unsigned(len);
         let x0 = first_centre_at_or_after(lo.0).max(clip.top_left.x);
-        let y0 = first_centre_at_or_after(lo.1).max(clip.top_left.y);
+        let top = first_centre_at_or_after(lo.1);
+        let y0 = top.max(clip.top_left.y);
         let x1 = (last_centre_at_or_before(hi.0) + 1).min(end(clip.top_left.x, clip.size.width));
         let y1 = (last_centre_at_or_before(hi.1) + 1).min(end(clip.top_left.y, clip.size.height));
         if x0 >= x1 || y0 >= y1 {
@@ -169,13 +191,16 @@ impl Frame {
         // candidates: clipping only moves them inwards), so every vertex
         // lies within the box's extent of it.
         let within = |lo: i32, hi: i32, bound: u32| hi.abs_diff(lo) < bound;
-        Some(Self {
+        let frame = Self {
             origin: Point::new(x0, y0),
             width: x1 - x0,
             height: y1 - y0,
             centre: (centre(x0), centre(y0)),
             near: within(lo.0, hi.0, 1 << 29) && within(lo.1, hi.1, 1 << 29),
-        })
+        };
+        let small =
+            within(lo.0, hi.0, SMALL as u32) && within(lo.1, hi.1, SMALL as u32) && top == y0;
+        Some((frame, small))
     }
 
     /// Whether every vertex of the shape lies within `2^29` raw units of
