@@ -134,15 +134,20 @@ impl<T: Narrow> Edge<T> {
 }
 
 impl Edge<i32> {
-    /// [`Edge::new`] from the edge's own first row, for a short edge near
-    /// the frame's origin: both coordinates of `top` and `bottom` below
-    /// [`SMALL`] in magnitude and their differences too (the caller shows
-    /// it from the shape's bounding box), `top.1 < bottom.1`.
+    /// [`Edge::new`] from the edge's own first row, for an edge less than
+    /// [`SMALL`] raw units wide that starts in the frame: `|bottom.0 -
+    /// top.0| < SMALL`, every coordinate below `2^29` in magnitude (the
+    /// bound of exact `i32` stepping, [`Wide::difference`]), and `-4096 <
+    /// top.1 < bottom.1` (the caller shows all of it from the shape's
+    /// bounding box and frame).
     ///
     /// Then every product fits `i32` and nothing is checked: `|4096 dx| <
     /// 2^31` and `e0 |dx| <= 4095 (2^19 - 1) < 2^31`, and with no row
-    /// skipped (`n = 0`) the crossing is `x0 + ceil(e0 dx / dy)`. Two
-    /// divisions, one hardware instruction each on a Cortex-M3 or later.
+    /// skipped (`n = 0`) the crossing is `x0 + ceil(e0 dx / dy)`, which
+    /// lies between the ends' `x` (the edge's first row lies within it),
+    /// so that it and its bias stay below `2^29 + 4096`. The height is
+    /// only a divisor, below `2^30`. Two divisions, one hardware
+    /// instruction each on a Cortex-M3 or later.
     ///
     /// ARMv6-M has no divide instruction: a division is a library call of
     /// about 160 instructions there, and an edge that crosses a single
@@ -191,7 +196,8 @@ impl Edge<i32> {
     }
 }
 
-/// The bound of [`Edge::new_small`]: `2^19` raw units, 128 pixels.
+/// The bound of [`Edge::new_small`] on an edge's width: `2^19` raw
+/// units, 128 pixels.
 pub(crate) const SMALL: i32 = 1 << 19;
 
 impl<T: Wide> Edge<T> {
@@ -307,23 +313,20 @@ mod tests {
             (Some(a), Some(b), Some(c), Some(d)) => Edge::<i32>::new((a, b), (c, d), from),
             _ => None,
         };
-        // The unchecked constructor, where its bounds hold and no row is
-        // skipped.
-        let within = |v: i64| {
-            i32::try_from(v)
-                .ok()
-                .filter(|v| v.unsigned_abs() < SMALL as u32)
-        };
+        // The unchecked constructor, where its bounds hold (coordinates
+        // below 2^29, less than SMALL wide, the top below -4096) and no
+        // row is skipped.
+        let stepped = |v: i64| i32::try_from(v).ok().filter(|v| v.unsigned_abs() < 1 << 29);
         let mut small = match (
-            within(top.0),
-            within(top.1),
-            within(bottom.0),
-            within(bottom.1),
-            within(bottom.0 - top.0),
-            within(bottom.1 - top.1),
+            stepped(top.0),
+            stepped(top.1),
+            stepped(bottom.0),
+            stepped(bottom.1),
         ) {
-            (Some(a), Some(b), Some(c), Some(d), Some(_), Some(_))
-                if i64::from(from) <= (top.1 + 4095) >> 12 =>
+            (Some(a), Some(b), Some(c), Some(d))
+                if (bottom.0 - top.0).unsigned_abs() < SMALL as u64
+                    && top.1 > -4096
+                    && i64::from(from) <= (top.1 + 4095) >> 12 =>
             {
                 let edge = Edge::new_small((a, b), (c, d));
                 assert!(edge.is_some(), "{top:?} {bottom:?}");
@@ -372,6 +375,34 @@ mod tests {
             -64,
         );
         check((3, -1), (-5, 7 * 4096 + 1), 0);
+        // Narrow and tall, to the bounds of the unchecked constructor.
+        check((-4095, -4095), ((1 << 19) - 4096, (1 << 29) - 1), i32::MIN);
+        check(
+            ((1 << 29) - 1, 0),
+            ((1 << 29) - (1 << 19) + 1, (1 << 29) - 1),
+            0,
+        );
+        check((-(1 << 29) + 1, 17), (-(1 << 29) + 5, 300 * 4096 + 3), 0);
+    }
+
+    /// The unchecked constructor on random edges within its bounds:
+    /// under 128 px wide, any height below 2^29 raw units, their tops
+    /// within a row above the frame's first or anywhere below it.
+    #[test]
+    fn narrow_edges_of_any_height() {
+        let mut random = crate::raster::xorshift(0x3C6E_F372_FE94_F82B);
+        let mut next = |n: i64| (random.next().unwrap_or_default() >> 1) as i64 % n;
+        for _ in 0..20_000 {
+            let top = (next(1 << 30) - (1 << 29), next(1 << 29) - 4095);
+            let width = next(2 * SMALL as i64 - 1) - (SMALL as i64 - 1);
+            let x = (top.0 + width).clamp(-(1 << 29) + 1, (1 << 29) - 1);
+            let bits = 1 + next(29);
+            let height = 1 + next(1i64 << bits);
+            let bottom = (x, (top.1 + height).min((1 << 29) - 1));
+            if top.1 < bottom.1 {
+                check(top, bottom, i32::MIN);
+            }
+        }
     }
 
     /// The direct threshold against the exact reference: the lines of

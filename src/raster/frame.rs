@@ -80,16 +80,18 @@ impl Frame {
 
     /// [`around`](Self::around), and whether every edge of the shape may
     /// be set up by [`Edge::new_small`](super::edge::Edge::new_small) from
-    /// its vertices' relative coordinates: the shape's box spans under
-    /// [`SMALL`] raw units a side, and the clip does not cut its top row.
+    /// its vertices' relative coordinates: the shape's box is under
+    /// [`SMALL`] raw units wide, its coordinates fit `i32` relative to the
+    /// frame ([`fits_i32`](Self::fits_i32)), and the clip does not cut its
+    /// top row.
     ///
-    /// Then every relative coordinate and every difference of two lies
-    /// within `-SMALL..SMALL` (the origin's centre lies in the box, see
-    /// [`of_box`](Self::of_box)), and every vertex lies less than a row
-    /// above the origin's centre (the origin's row is the first whose
-    /// centre is at or below the box's top), so that no edge starts above
-    /// the frame's first row. A separate answer, not a field of the
-    /// frame: the shapes that do not ask for it store nothing more.
+    /// Then every difference of two `x` lies within `-SMALL..SMALL`, every
+    /// relative coordinate below `2^29` in magnitude, and every vertex
+    /// less than a row above the origin's centre (the origin's row is the
+    /// first whose centre is at or below the box's top), so that no edge
+    /// starts above the frame's first row: what `new_small` needs,
+    /// whatever the height. A separate answer, not a field of the frame:
+    /// the shapes that do not ask for it store nothing more.
     #[inline(always)]
     pub(crate) fn around_and_whether_small(
         vertices: &[Vertex],
@@ -198,8 +200,7 @@ impl Frame {
             centre: (centre(x0), centre(y0)),
             near: within(lo.0, hi.0, 1 << 29) && within(lo.1, hi.1, 1 << 29),
         };
-        let small =
-            within(lo.0, hi.0, SMALL as u32) && within(lo.1, hi.1, SMALL as u32) && top == y0;
+        let small = frame.near && within(lo.0, hi.0, SMALL as u32) && top == y0;
         Some((frame, small))
     }
 
