@@ -133,9 +133,10 @@ pub(crate) fn is_convex(v: &[Vertex]) -> bool {
 ///
 /// One pass, each height read once: the steps are taken from the last
 /// vertex to the first, then along the slice, which is the same cycle
-/// started elsewhere. On a Cortex-M4 (`.ci/itrace`, the 18 px hexagon)
-/// this took 238 instructions as a test of each step's two heights
-/// through an index, with a first pass backwards for the last step.
+/// started elsewhere. Written to read each step's two heights through
+/// an index, after a first pass backwards for the last step, it took 238
+/// of an 18 px hexagon's 2,674 instructions on a Cortex-M4
+/// (`.ci/itrace`); this form, inlined, left the hexagon at 2,563.
 pub(crate) fn y_monotone(vertices: &[Vertex]) -> bool {
     let Some(last) = vertices.last() else {
         return false;

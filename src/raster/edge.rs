@@ -314,8 +314,8 @@ mod tests {
             _ => None,
         };
         // The unchecked constructor, where its bounds hold (coordinates
-        // below 2^29, less than SMALL wide, the top below -4096) and no
-        // row is skipped.
+        // below 2^29, less than SMALL wide, the top less than a row above
+        // row 0) and no row is skipped.
         let stepped = |v: i64| i32::try_from(v).ok().filter(|v| v.unsigned_abs() < 1 << 29);
         let mut small = match (
             stepped(top.0),
