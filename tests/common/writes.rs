@@ -117,7 +117,10 @@ where
                 _ => (0..n).map(|_| vertex(rng)).collect(),
             };
             let poly = Polygon::<8>::new(&v).unwrap().fill(luma);
-            let Ok(()) = poly.draw_spans(sink);
+            let Ok(()) = match rng.below(2) {
+                0 => poly.draw(sink),
+                _ => poly.draw_spans(sink),
+            };
             format!("polygon {v:?}")
         }
         _ => {
