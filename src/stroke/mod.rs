@@ -70,9 +70,10 @@
 //!
 //! Any `i32` points (polylines) and any [`Vertex`]es (triangles,
 //! polygons), any width up to 65535 px (wider is drawn as 65535), any
-//! clip: coordinates are kept in `i128` raw units, below `2^46`, so no
-//! product overflows and nothing is cut or lost at the edges of the 20.12
-//! range.
+//! clip: coordinates are raw units below `2^46`, kept in `i64` (their
+//! sums and differences fit it) with the products that can pass it taken
+//! in `i128`, so nothing overflows and nothing is cut or lost at the edges
+//! of the 20.12 range.
 
 pub(crate) mod pieces;
 mod row;
@@ -152,9 +153,9 @@ use row::{Mask, Tile, MASK_BITS, MASK_WORDS};
 /// # Ranges
 ///
 /// Any `i32` points, any [`Vertex`]es, any width (over 65535 px drawn as
-/// 65535), any clip: coordinates are kept in `i128` raw units below
-/// `2^46`, so nothing overflows and, unlike a single thick line, nothing
-/// is cut at the edges of the 20.12 range.
+/// 65535), any clip: coordinates are raw units below `2^46`, with
+/// products taken in `i128`, so nothing overflows and, unlike a single
+/// thick line, nothing is cut at the edges of the 20.12 range.
 ///
 /// # Examples
 ///
@@ -274,11 +275,11 @@ impl Outline<'_> {
     fn at(&self, k: usize) -> Pt {
         match self {
             Self::Points(p) => p.get(k).map_or((0, 0), |p| {
-                (i128::from(p.x) * 4096 + 2048, i128::from(p.y) * 4096 + 2048)
+                (i64::from(p.x) * 4096 + 2048, i64::from(p.y) * 4096 + 2048)
             }),
             Self::Vertices(v) => v.get(k).map_or((0, 0), |v| {
                 let (x, y) = v.raw();
-                (i128::from(x), i128::from(y))
+                (i64::from(x), i64::from(y))
             }),
         }
     }
@@ -291,7 +292,7 @@ pub(crate) struct Stroke<'a> {
     /// Whether the last point joins the first (through a segment from it
     /// to the first, unless they are equal).
     closed: bool,
-    width: i128,
+    width: i64,
     join: Join,
 }
 
@@ -301,7 +302,7 @@ impl<'a> Stroke<'a> {
         Self {
             outline,
             closed,
-            width: i128::from(width.clamp(1, MAX_WIDTH)),
+            width: i64::from(width.clamp(1, MAX_WIDTH)),
             join,
         }
     }
@@ -406,7 +407,7 @@ impl<'a> Stroke<'a> {
     /// How far (raw units) any piece reaches from the points: a miter tip
     /// is within `2 w` of its joint (within [`MITER_LIMIT`]), a corner
     /// within `w / 2 + 1/2`, a square's corner within `w / sqrt(2)`.
-    fn reach(&self) -> i128 {
+    fn reach(&self) -> i64 {
         4096 * 2 * self.width + 8192
     }
 
@@ -417,14 +418,14 @@ impl<'a> Stroke<'a> {
         let coordinate = |p: Pt| if axis == 0 { p.0 } else { p.1 };
         let (min, max) = (0..self.outline.len())
             .map(|k| coordinate(self.outline.at(k)))
-            .fold((i128::MAX, i128::MIN), |(a, b), v| (a.min(v), b.max(v)));
+            .fold((i64::MAX, i64::MIN), |(a, b), v| (a.min(v), b.max(v)));
         if min > max {
             return None;
         }
+        // Points below 2^46, a reach below 2^30: no overflow.
         let first = -((-(min - self.reach() - 2048)).div_euclid(4096));
         let last = (max + self.reach() - 2048).div_euclid(4096);
-        let first = i64::try_from(first.max(lo.into())).ok()?;
-        let end = i64::try_from((last + 1).min(hi.into())).ok()?;
+        let (first, end) = (first.max(lo), (last + 1).min(hi));
         (first < end).then_some(first..end)
     }
 
@@ -501,14 +502,14 @@ impl<'a> Stroke<'a> {
 /// last.
 #[derive(Debug, Clone, Copy)]
 struct Window {
-    x: (i128, i128),
-    y: (i128, i128),
+    x: (i64, i64),
+    y: (i64, i64),
 }
 
 impl Window {
     fn of(tile: &Tile) -> Self {
         // Pixels within 2^33 of the origin: no overflow.
-        let centre = |v: i64| i128::from(v) * 4096 + 2048;
+        let centre = |v: i64| v * 4096 + 2048;
         Self {
             x: (centre(tile.x0), centre(tile.x1 - 1)),
             y: (centre(tile.y0), centre(tile.y1 - 1)),
@@ -519,10 +520,9 @@ impl Window {
     /// box of `a` and `b`: a piece built there that reaches no further
     /// cannot light one.
     #[inline(always)]
-    fn near(&self, a: Pt, b: Pt, reach: i128) -> bool {
-        let overlaps = |(lo, hi): (i128, i128), u: i128, v: i128| {
-            hi >= u.min(v) - reach && lo <= u.max(v) + reach
-        };
+    fn near(&self, a: Pt, b: Pt, reach: i64) -> bool {
+        let overlaps =
+            |(lo, hi): (i64, i64), u: i64, v: i64| hi >= u.min(v) - reach && lo <= u.max(v) + reach;
         overlaps(self.x, a.0, b.0) && overlaps(self.y, a.1, b.1)
     }
 }
@@ -547,14 +547,14 @@ impl Offsets {
     }
 
     /// The offset `n` of segment `k`.
-    fn get(&mut self, k: usize, seg: &Segment, w: i128) -> Pt {
+    fn get(&mut self, k: usize, seg: &Segment, w: i64) -> Pt {
         let slot = &mut self.entries[k % CACHED];
         if slot.0 != k {
             let n = seg.normal(w);
-            let c = |v: i128| i32::try_from(v).unwrap_or_default();
+            let c = |v: i64| i32::try_from(v).unwrap_or_default();
             *slot = (k, [c(n.0), c(n.1)]);
         }
-        (i128::from(slot.1[0]), i128::from(slot.1[1]))
+        (i64::from(slot.1[0]), i64::from(slot.1[1]))
     }
 }
 
@@ -568,20 +568,25 @@ fn piece_spans<E>(
     tile: &Tile,
     emit: &mut impl FnMut(i32, i32, u32) -> Result<(), E>,
 ) -> Result<(), E> {
-    if let Some(vertices) = piece.vertices() {
+    if let Some((vertices, count)) = piece.vertices() {
         // Convex: no y-monotone test. The walk's spans are not reversed.
+        let vertices = vertices.get(..count).unwrap_or_default();
         let walked = monotone_spans(vertices, Shape::Convex, &tile.rectangle, &mut as_runs(emit));
         if let Some(result) = walked {
             return result;
         }
     }
+    // With no area, it lights nothing.
+    let Some(region) = piece.region() else {
+        return Ok(());
+    };
     // The rows whose samples 4096 j + 2048 lie in the piece's extent.
-    let (lo, hi) = piece.ys;
+    let (lo, hi) = region.ys;
     let first = (lo.saturating_sub(2048) / 4096 - 1).max(tile.y0);
     let end = (hi.saturating_sub(2048) / 4096 + 2).min(tile.y1);
     for j in first..end {
         // |j| < 2^32: the sample fits i64.
-        if let Some((a, b)) = row::interval(piece, j * 4096 + 2048) {
+        if let Some((a, b)) = row::interval(&region, j * 4096 + 2048) {
             let (a, b) = (a.clamp(tile.x0, tile.x1), b.clamp(tile.x0, tile.x1));
             // The tile's rows and columns before its far sides are
             // `Point` coordinates, and its sides fit `u32`.

@@ -40,11 +40,16 @@ use crate::{
     vertex::Vertex,
 };
 
-/// A point in raw 20.12 units.
-pub(crate) type Pt = (i128, i128);
+/// A point (or an offset) in raw 20.12 units. A stroke's points,
+/// corners and offsets all lie below `2^46` in magnitude (module `row`),
+/// so their sums and differences fit `i64`; products that can reach past
+/// it are taken in `i128`.
+pub(crate) type Pt = (i64, i64);
 
+/// `cross(u, v)`, exact for any two points.
 fn cross(u: Pt, v: Pt) -> i128 {
-    u.0 * v.1 - u.1 * v.0
+    let w = i128::from;
+    w(u.0) * w(v.1) - w(u.1) * w(v.0)
 }
 
 fn add(u: Pt, v: Pt) -> Pt {
@@ -65,95 +70,73 @@ pub(crate) struct Plane {
     pub o: i8,
 }
 
-/// A convex piece: the intersection of up to four half-planes and, for a
-/// round join, a disk (centre, squared radius). A polygon also keeps its
-/// corners, which the raster core walks when they are 20.12 vertices.
+/// A convex piece of a stroke: a polygon (a segment's parallelogram, a
+/// bevel or a miter's tip) or a round join's disk sector.
+///
+/// Built in every tile that it can reach, and most are walked by the
+/// raster core from their corners alone: a piece holds only what defines
+/// it, and the half-planes that the row-by-row fallback reads are derived
+/// when it is taken ([`region`](Self::region)). On a Cortex-M4 (`.ci/itrace`'s
+/// zigzag through `draw`) the pieces built with their half-planes took
+/// 1,061,064 instructions, and 993,702 built this way.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Piece {
+pub(crate) enum Piece {
+    /// A convex polygon through `corners[..count]` (3 or 4, in order,
+    /// either winding); one of no area lights nothing.
+    Polygon { corners: [Pt; 4], count: usize },
+    /// The disk of centre `centre` and squared radius `r2` (`r2 < 2^55`)
+    /// cut by the half-planes through the centre along `cuts[..count]`'s
+    /// directions, on their sides.
+    Sector {
+        centre: Pt,
+        r2: i64,
+        cuts: [(Pt, i8); 2],
+        count: usize,
+    },
+}
+
+/// A piece as the row-by-row fallback reads it ([`interval`](super::row::interval)):
+/// up to four half-planes and, for a sector, its disk.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Region {
     planes: [Plane; 4],
     count: usize,
-    pub disk: Option<((i64, i64), i64)>,
-    /// A polygon's corners in order (`corner_count` of them), `None`
-    /// unless every one fits `i32` raw units.
-    corners: Option<[Vertex; 4]>,
-    corner_count: usize,
+    /// Centre and squared radius.
+    pub disk: Option<(Pt, i64)>,
     /// The lowest and highest `y` (raw) of the piece, or beyond.
     pub ys: (i64, i64),
 }
 
-/// `p` in `i64`; `None` never happens for a stroke's points (below
-/// `2^46`).
-fn narrow(p: Pt) -> Option<(i64, i64)> {
-    Some((i64::try_from(p.0).ok()?, i64::try_from(p.1).ok()?))
-}
-
-impl Piece {
+impl Region {
     /// The half-planes.
     pub fn planes(&self) -> &[Plane] {
-        &self.planes[..self.count]
+        self.planes.get(..self.count).unwrap_or_default()
     }
 
-    /// A polygon's corners as vertices, if they all fit the 20.12 range.
-    pub fn vertices(&self) -> Option<&[Vertex]> {
-        self.corners.as_ref()?.get(..self.corner_count)
-    }
-
-    /// Calls `f` with the convex polygon through `v` (3 or 4 vertices in
-    /// order, either winding), unless it has no area. (Built in place and
-    /// lent: a piece is 264 bytes on a 64-bit host, not worth copying.)
-    #[inline(always)]
-    pub fn polygon(v: &[Pt], f: &mut dyn FnMut(&Piece)) {
-        let mut piece = Self::empty();
-        if piece.set_polygon(v).is_some() {
-            f(&piece);
+    fn empty() -> Self {
+        let none = Plane {
+            a: (0, 0),
+            d: (1, 0),
+            o: 1,
+        };
+        Self {
+            planes: [none; 4],
+            count: 0,
+            disk: None,
+            ys: (i64::MIN, i64::MAX),
         }
     }
 
-    /// Makes this empty piece the polygon through `v`; `None` if it has
-    /// no area.
-    ///
-    /// In `i64` when every coordinate lies below `2^29` in magnitude (any
-    /// stroke on a screen: differences below `2^30`, twice the area below
-    /// `2^62`), else in `i128`. On a Cortex-M4 the `i128` set-up was
-    /// about 30 % of the tiles' piece building (`.ci/itrace`'s zigzag:
-    /// `for_each_piece` 236,474 instructions all in `i128`, 165,772 now).
-    #[inline(always)]
-    fn set_polygon(&mut self, v: &[Pt]) -> Option<()> {
-        const NEAR: i128 = 1 << 29;
-        let mut near = [(0i64, 0i64); 4];
-        let all_near = v.len() <= near.len()
-            && v.iter().zip(&mut near).all(|(p, slot)| {
-                // Tested in i128 first: the conversion is then exact.
-                let inside = |c: i128| match -NEAR < c && c < NEAR {
-                    true => i64::try_from(c).ok(),
-                    false => None,
-                };
-                match (inside(p.0), inside(p.1)) {
-                    (Some(x), Some(y)) => {
-                        *slot = (x, y);
-                        true
-                    }
-                    _ => false,
-                }
-            });
-        match all_near {
-            true => self.set_outline(near.get(..v.len())?),
-            false => self.set_outline_wide(v),
+    fn push(&mut self, plane: Plane) {
+        if let Some(slot) = self.planes.get_mut(self.count) {
+            *slot = plane;
+            self.count += 1;
         }
     }
 
-    /// [`set_outline`](Self::set_outline) in `i128`, out of line: one
-    /// copy for the pieces far off any screen, not one in every kind of
-    /// piece (flash).
-    #[inline(never)]
-    fn set_outline_wide(&mut self, v: &[Pt]) -> Option<()> {
-        self.set_outline(v)
-    }
-
-    /// [`set_polygon`](Self::set_polygon) in `T`, which holds `v` and
-    /// twice its area.
-    #[inline(always)]
-    fn set_outline<T: Wide>(&mut self, v: &[(T, T)]) -> Option<()> {
+    /// The polygon through `v` in `T`, which holds `v` and twice its
+    /// area; `None` if it has no area.
+    fn of_polygon<T: Wide>(v: &[(T, T)]) -> Option<Self> {
         let first = *v.first()?;
         let sub = |u: (T, T), w: (T, T)| (u.0 - w.0, u.1 - w.1);
         // Twice the area, from the first vertex.
@@ -166,84 +149,111 @@ impl Piece {
             core::cmp::Ordering::Equal => return None,
             core::cmp::Ordering::Greater => 1,
         };
+        let mut region = Self::empty();
         let (lo, hi) = v
             .iter()
             .skip(1)
             .fold((first.1, first.1), |(lo, hi), p| (lo.min(p.1), hi.max(p.1)));
-        self.ys = (lo.to_i64()?, hi.to_i64()?);
-        // The corners as vertices, if each fits the 20.12 range.
-        let vertex = |p: &(T, T)| Some(Vertex::from_raw(p.0.to_i32()?, p.1.to_i32()?));
-        let mut corners = Some([Vertex::default(); 4]);
-        for (k, p) in v.iter().enumerate() {
-            match (corners.as_mut().and_then(|c| c.get_mut(k)), vertex(p)) {
-                (Some(slot), Some(p)) => *slot = p,
-                _ => corners = None,
-            }
-        }
-        self.corners = corners;
-        self.corner_count = v.len();
+        region.ys = (lo.to_i64()?, hi.to_i64()?);
         let next = v.iter().skip(1).chain(Some(&first));
         for (&from, &to) in v.iter().zip(next) {
             let d = sub(to, from);
             if d != (T::ZERO, T::ZERO) {
-                self.push(Plane {
+                region.push(Plane {
                     a: (from.0.to_i64()?, from.1.to_i64()?),
                     d: (d.0.to_i64()?, d.1.to_i64()?),
                     o,
                 });
             }
         }
-        Some(())
+        Some(region)
     }
 
-    /// The disk of centre `c` and squared radius `r2` cut by the
-    /// half-planes through `c` along `d` with sides `o`.
-    fn sector(c: Pt, r2: i128, planes: &[(Pt, i128)], f: &mut dyn FnMut(&Piece)) {
-        let mut piece = Self::empty();
-        if piece.set_sector(c, r2, planes).is_some() {
-            f(&piece);
+    /// [`of_polygon`](Self::of_polygon) in `i128`, out of line: one copy
+    /// for the pieces far off any screen.
+    #[inline(never)]
+    fn of_wide_polygon(v: &[Pt]) -> Option<Self> {
+        let mut wide = [(0i128, 0i128); 4];
+        for (slot, p) in wide.iter_mut().zip(v) {
+            *slot = (p.0.into(), p.1.into());
         }
+        Self::of_polygon(wide.get(..v.len())?)
     }
+}
 
-    fn set_sector(&mut self, c: Pt, r2: i128, planes: &[(Pt, i128)]) -> Option<()> {
-        let c = narrow(c)?;
-        for &(d, o) in planes {
-            self.push(Plane {
-                a: c,
-                d: narrow(d)?,
-                o: o.signum() as i8,
-            });
-        }
-        let r2 = i64::try_from(r2).ok()?;
-        self.disk = Some((c, r2));
-        // Rows beyond the disk's top and bottom cross nothing.
-        let r = r2.isqrt() + 1;
-        self.ys = (c.1 - r, c.1 + r);
-        Some(())
-    }
-
+impl Piece {
+    /// Calls `f` with the convex polygon through `v` (3 or 4 vertices in
+    /// order, either winding).
     #[inline(always)]
-    fn empty() -> Self {
-        let none = Plane {
-            a: (0, 0),
-            d: (1, 0),
-            o: 1,
+    pub fn polygon(v: &[Pt], f: &mut dyn FnMut(&Piece)) {
+        let mut corners = [(0, 0); 4];
+        let count = v.len().min(4);
+        corners[..count].copy_from_slice(&v[..count]);
+        f(&Self::Polygon { corners, count });
+    }
+
+    /// Calls `f` with the disk of centre `c` and squared radius `r2` cut
+    /// by the half-planes through `c` along each `d` of `cuts`, on the side
+    /// of the sign of its `o`.
+    fn sector(c: Pt, r2: i64, cuts: &[(Pt, i128)], f: &mut dyn FnMut(&Piece)) {
+        let mut piece = [((0, 0), 0i8); 2];
+        let count = cuts.len().min(2);
+        for (slot, &(d, o)) in piece.iter_mut().zip(cuts) {
+            *slot = (d, o.signum() as i8);
+        }
+        f(&Self::Sector {
+            centre: c,
+            r2,
+            cuts: piece,
+            count,
+        });
+    }
+
+    /// A polygon's corners as vertices, if they all fit the 20.12 range.
+    pub fn vertices(&self) -> Option<([Vertex; 4], usize)> {
+        let Self::Polygon { corners, count } = self else {
+            return None;
         };
-        Self {
-            planes: [none; 4],
-            count: 0,
-            disk: None,
-            corners: None,
-            corner_count: 0,
-            ys: (i64::MIN, i64::MAX),
+        let mut vertices = [Vertex::default(); 4];
+        for (slot, p) in vertices.iter_mut().zip(&corners[..*count]) {
+            *slot = Vertex::from_raw(i32::try_from(p.0).ok()?, i32::try_from(p.1).ok()?);
         }
+        Some((vertices, *count))
     }
 
-    #[inline(always)]
-    fn push(&mut self, plane: Plane) {
-        if let Some(slot) = self.planes.get_mut(self.count) {
-            *slot = plane;
-            self.count += 1;
+    /// The piece's half-planes, disk and extent in `y`; `None` if it has
+    /// no area.
+    ///
+    /// A polygon's in `i64` when every coordinate lies below `2^29` in
+    /// magnitude (any stroke on a screen: differences below `2^30`, twice
+    /// the area below `2^62`), else in `i128`.
+    pub fn region(&self) -> Option<Region> {
+        match *self {
+            Self::Polygon { corners, count } => {
+                let v = corners.get(..count)?;
+                const NEAR: i64 = 1 << 29;
+                let near = |c: i64| -NEAR < c && c < NEAR;
+                match v.iter().all(|p| near(p.0) && near(p.1)) {
+                    true => Region::of_polygon(v),
+                    false => Region::of_wide_polygon(v),
+                }
+            }
+            Self::Sector {
+                centre,
+                r2,
+                cuts,
+                count,
+            } => {
+                let mut region = Region::empty();
+                for &(d, o) in cuts.get(..count)? {
+                    region.push(Plane { a: centre, d, o });
+                }
+                region.disk = Some((centre, r2));
+                // Rows beyond the disk's top and bottom cross nothing.
+                let r = r2.isqrt() + 1;
+                region.ys = (centre.1 - r, centre.1 + r);
+                Some(region)
+            }
         }
     }
 }
@@ -257,7 +267,7 @@ pub(crate) struct Segment {
 
 impl Segment {
     /// The offset `n` (module docs) for width `w <= 65535`.
-    pub fn normal(&self, w: i128) -> Pt {
+    pub fn normal(&self, w: i64) -> Pt {
         let scaled = self.scaler();
         (-scaled(1, 2048 * w), scaled(0, 2048 * w))
     }
@@ -275,15 +285,18 @@ impl Segment {
     /// power of two dividing both components: a direction between pixel
     /// centres (a multiple of 4096) becomes one between `i32` pixels,
     /// below `2^32` a component, as is any difference of `Vertex`
-    /// coordinates. Then `|d| f < 2^32 * 2048 * 65535 < 2^59`.
-    fn scaler(&self) -> impl Fn(usize, i128) -> i128 {
+    /// coordinates. Then `|d| f < 2^32 * 2048 * 65535 < 2^59`, and the
+    /// result is at most `f` in magnitude.
+    fn scaler(&self) -> impl Fn(usize, i64) -> i64 {
         let d = sub(self.b, self.a);
-        let shift = (d.0 | d.1).trailing_zeros().min(127);
-        let d = [d.0 >> shift, d.1 >> shift];
+        let shift = (d.0 | d.1).trailing_zeros().min(63);
+        let d = [i128::from(d.0 >> shift), i128::from(d.1 >> shift)];
         let len2 = (d[0] * d[0] + d[1] * d[1]).unsigned_abs();
         move |i, f| {
             let c = d[i & 1];
-            c.signum() * div_sqrt(c.unsigned_abs() * f.unsigned_abs(), len2)
+            let scaled = div_sqrt(c.unsigned_abs() * u128::from(f.unsigned_abs()), len2);
+            // At most |f|: it fits.
+            i64::try_from(c.signum() * scaled).unwrap_or_default()
         }
     }
 
@@ -298,7 +311,7 @@ impl Segment {
 
 /// The `w x w` square around `p` that a stroke of no length draws, as a
 /// zero-length thick line does.
-pub(crate) fn square(p: Pt, w: i128, f: &mut dyn FnMut(&Piece)) {
+pub(crate) fn square(p: Pt, w: i64, f: &mut dyn FnMut(&Piece)) {
     let r = 2048 * w;
     let corners = [
         (p.0 - r, p.1 + r),
@@ -324,7 +337,9 @@ pub(crate) fn square(p: Pt, w: i128, f: &mut dyn FnMut(&Piece)) {
 /// - Round: the disk of radius `r` around `P`, exactly, cut to the cone
 ///   between the rays `s n0` and `s n1` (after a full reversal, to the
 ///   half-plane ahead of the first segment).
-pub(crate) fn join(p: Pt, n0: Pt, d0: Pt, n1: Pt, w: i128, kind: Join, f: &mut dyn FnMut(&Piece)) {
+pub(crate) fn join(p: Pt, n0: Pt, d0: Pt, n1: Pt, w: i64, kind: Join, f: &mut dyn FnMut(&Piece)) {
+    // The offsets are below 2048 w <= 2^27 a component: r^2, n0.n1 and
+    // 16 of either fit i64.
     let r2 = (2048 * w) * (2048 * w);
     let c = cross(n0, n1);
     let dot = n0.0 * n1.0 + n0.1 * n1.1;
@@ -334,7 +349,7 @@ pub(crate) fn join(p: Pt, n0: Pt, d0: Pt, n1: Pt, w: i128, kind: Join, f: &mut d
         }
         return;
     }
-    let s = -c.signum();
+    let s = -c.signum() as i64;
     let (u0, u1) = ((s * n0.0, s * n0.1), (s * n1.0, s * n1.1));
     let (c0, c1) = (add(p, u0), add(p, u1));
     if kind == Join::Round {
@@ -343,14 +358,16 @@ pub(crate) fn join(p: Pt, n0: Pt, d0: Pt, n1: Pt, w: i128, kind: Join, f: &mut d
         return;
     }
     Piece::polygon(&[p, c0, c1], f);
-    let l2 = i128::from(MITER_LIMIT) * i128::from(MITER_LIMIT);
+    let l2 = i64::from(MITER_LIMIT) * i64::from(MITER_LIMIT);
     if kind == Join::Miter && l2 * dot >= (2 - l2) * r2 {
-        // r^2 + n0.n1 >= 2 r^2 / L^2 > 0.
-        let den = r2 + dot;
-        let m = (
-            p.0 + round_div((u0.0 + u1.0) * r2, den),
-            p.1 + round_div((u0.1 + u1.1) * r2, den),
-        );
+        // r^2 + n0.n1 >= 2 r^2 / L^2 > 0, and the tip lies within the
+        // miter limit, 2^29 of the joint: it fits.
+        let den = i128::from(r2 + dot);
+        let tip = |u: i64| {
+            let t = round_div(i128::from(u) * i128::from(r2), den);
+            i64::try_from(t).unwrap_or_default()
+        };
+        let m = (p.0 + tip(u0.0 + u1.0), p.1 + tip(u0.1 + u1.1));
         Piece::polygon(&[c0, m, c1], f);
     }
 }

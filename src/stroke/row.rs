@@ -13,7 +13,7 @@
 
 use embedded_graphics_core::primitives::Rectangle;
 
-use super::pieces::Piece;
+use super::pieces::Region;
 use crate::{clip::Bounds, raster::edge::threshold_on_row};
 
 /// Raw units per pixel, and half of it (a pixel centre's offset).
@@ -26,7 +26,7 @@ fn ceil_div(n: i64, d: i64) -> Option<i64> {
 }
 
 /// The columns `lo..hi` of row sample `py` (raw) whose nudged centres lie
-/// inside `piece`; `None` if none do. Unbounded sides stay at `i64::MIN`
+/// inside the piece of `region`; `None` if none do. Unbounded sides stay at `i64::MIN`
 /// or `i64::MAX` (the caller clips).
 ///
 /// A half-plane is `o cross(d, p' - a) > 0` at the nudged centre `p' = p +
@@ -36,9 +36,9 @@ fn ceil_div(n: i64, d: i64) -> Option<i64> {
 /// whole row or none of it, by the `e^2` term when the row is on it. With
 /// `cx = 4096 i + 2048`, both bounds are the column `ceil((X - 2048) /
 /// 4096)`.
-pub(crate) fn interval(piece: &Piece, py: i64) -> Option<(i64, i64)> {
+pub(crate) fn interval(region: &Region, py: i64) -> Option<(i64, i64)> {
     let (mut lo, mut hi) = (i64::MIN, i64::MAX);
-    for h in piece.planes() {
+    for h in region.planes() {
         let (a, d, o) = (h.a, h.d, i64::from(h.o));
         if d.1 == 0 {
             let s = o * d.0.signum();
@@ -57,7 +57,7 @@ pub(crate) fn interval(piece: &Piece, py: i64) -> Option<(i64, i64)> {
             lo = lo.max(c);
         }
     }
-    if let Some((c, r2)) = piece.disk {
+    if let Some((c, r2)) = region.disk {
         let (dlo, dhi) = disk_interval(c, r2, py)?;
         lo = lo.max(dlo);
         hi = hi.min(dhi);
