@@ -147,7 +147,7 @@ use row::{Mask, Tile, MASK_BITS, MASK_WORDS};
 /// which overlap and leave notches, take 15 µs and 0.11 ms, and
 /// embedded-graphics 0.8's `Polyline` with the same stroke 1.1 ms and
 /// 12.1 ms, in the same run. On a Cortex-M4 (`.ci/itrace`) the zigzag
-/// takes 0.43 million instructions through `draw_spans` and 1.14 million
+/// takes 0.40 million instructions through `draw_spans` and 0.99 million
 /// through `draw`, its separate thick lines 0.30 million.
 ///
 /// # Ranges
