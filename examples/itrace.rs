@@ -103,6 +103,12 @@ mod target {
         // them with a `memmove` inside the window.
         draw(&small, FB);
         draw(&irregular(64, 64, 64), FB);
+        // The 16 px triangle Gouraud-shaded, through `draw` (the shaded
+        // spans' colours go to the framebuffer's `fill_contiguous`).
+        let shaded = small.gouraud([Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE]);
+        begin();
+        let Ok(()) = black_box(&shaded).draw(black_box(&mut *FB));
+        end();
         let line = super::builtin_scene::star_line(1, 100)
             .stroke(Rgb565::RED)
             .stroke_width(3);

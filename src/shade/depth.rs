@@ -300,8 +300,9 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, FilledTriangle<C>> {
         };
         let z = depth_setup(&frame, self.z);
         let color = self.shaded.color;
+        let mut lambdas = frame.span_lambdas();
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
-            let [z0] = z.at(frame.lambdas(span.x_start, span.y));
+            let [z0] = z.at(lambdas.at(span.x_start, span.y));
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
                 let run = Span {
                     y: span.y,
@@ -330,8 +331,9 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, GouraudTriangle<C>> {
         };
         let frame = setup.frame;
         let z = depth_setup(&frame, self.z);
+        let mut lambdas = frame.span_lambdas();
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
-            let l = frame.lambdas(span.x_start, span.y);
+            let l = lambdas.at(span.x_start, span.y);
             let [z0] = z.at(l);
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
                 let run = Span {
