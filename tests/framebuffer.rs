@@ -341,8 +341,13 @@ fn axis(limit: i64) -> impl Strategy<Value = (i32, u32)> {
 }
 
 fn arb_rect(w: usize, h: usize) -> impl Strategy<Value = Rectangle> {
-    (axis(w as i64), axis(h as i64))
-        .prop_map(|((x, wd), (y, ht))| Rectangle::new(Point::new(x, y), Size::new(wd, ht)))
+    let any = (axis(w as i64), axis(h as i64))
+        .prop_map(|((x, wd), (y, ht))| Rectangle::new(Point::new(x, y), Size::new(wd, ht)));
+    // One row, as the shaded triangles' spans come to `fill_contiguous`:
+    // inside, or across an edge.
+    let row = (axis(w as i64), -2..h as i32 + 2)
+        .prop_map(|((x, wd), y)| Rectangle::new(Point::new(x, y), Size::new(wd, 1)));
+    prop_oneof![3 => any, 1 => row]
 }
 
 fn arb_point(w: usize, h: usize) -> impl Strategy<Value = Point> {

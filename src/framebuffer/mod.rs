@@ -386,6 +386,25 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
         }
     }
 
+    /// The bytes of `area`'s row and its columns, if `area` is one row
+    /// lying wholly inside the buffer.
+    #[inline]
+    fn row_inside(&mut self, area: &Rectangle) -> Option<(&mut [u8], Range<usize>)> {
+        if area.size.height != 1 {
+            return None;
+        }
+        let y = usize::try_from(area.top_left.y).ok().filter(|&y| y < H)?;
+        let x = usize::try_from(area.top_left.x).ok()?;
+        let end = x.checked_add(usize::try_from(area.size.width).ok()?)?;
+        if end > W {
+            return None;
+        }
+        // y < H: the row lies within the buffer's H rows of STRIDE bytes.
+        let stride = Self::STRIDE;
+        let row = self.data.0.get_mut(y * stride..(y + 1) * stride)?;
+        Some((row, x..end))
+    }
+
     /// Rows `ys` (within `0..=H`, else none) as byte slices, and the
     /// pixels `xs` of each to draw.
     ///
@@ -513,6 +532,12 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
     where
         I: IntoIterator<Item = F::Color>,
     {
+        // One row inside the buffer, as the shaded triangles' spans come:
+        // written into it with no clipping.
+        if let Some((row, xs)) = self.row_inside(area) {
+            F::write_span(row, xs, &mut colors.into_iter());
+            return Ok(());
+        }
         let bounds = self.bounding_box();
         let (Some((xs, ys)), Some((skip, gap))) =
             (clip_to(area, &bounds), row_major_skips(area, &bounds))
