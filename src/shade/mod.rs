@@ -131,11 +131,12 @@ const STEPPED_COLUMNS: u32 = 8;
 /// and each step divided once by `m` the same way, a step is an add of
 /// quotients, an add of remainders and one carry: `q` is exactly `L_k`.
 ///
-/// A 32-bit core divides 128 bits by shifts and subtractions, about 1,600
-/// instructions a division on a Cortex-M4: `.ci/itrace`'s 16 px triangle,
-/// Gouraud-shaded, took 71,845 instructions with two divisions a span
-/// (54,418 of them dividing), 33,727 stepped, and 25,261 once the
-/// division went by estimates (`raster::wide`).
+/// A 32-bit core divides 128 bits in software: on a Cortex-M4
+/// `.ci/itrace`'s 16 px triangle, Gouraud-shaded, took 71,845
+/// instructions with two divisions a span (54,418 of them dividing, then
+/// by shifts and subtractions, about 1,600 a division), and 33,714
+/// stepped; 19,451 now, with the division by estimates
+/// (`raster::wide`) and the other changes of that session.
 ///
 /// Sizes: `|D| < 2^65`, so `m < 2^66`; at a span's first pixel `0 <= w_k
 /// <= |D|`, so `q` lies in `0..=2^60`; a step changes `w_k` by under
