@@ -55,6 +55,7 @@ mod target {
     use embedded_graphics_core::{geometry::Point, Drawable};
     use embedded_raster::{
         band::DisplayList,
+        shade::DepthBuffer,
         framebuffer::{buffer_size, Rgb565Le},
         Framebuffer, Join, Line, Polyline, Span, SpanDrawable, Triangle,
     };
@@ -94,6 +95,7 @@ mod target {
         static mut LIST: Option<SceneList<'static>> = None;
         static mut SHAPES: Option<super::builtin_scene::SceneShapes> = None;
         static mut BAND16: Band16 = Band16::new();
+        static mut DEPTH: [u16; 64 * 64] = [0; 64 * 64];
         let small = irregular(32, 48, 16);
         begin();
         let first = |_: Span| Err(());
@@ -108,6 +110,14 @@ mod target {
         let shaded = small.gouraud([Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE]);
         begin();
         let Ok(()) = black_box(&shaded).draw(black_box(&mut *FB));
+        end();
+        // The same triangle flat, depth-tested against a cleared 64 x 64
+        // depth buffer that holds it (every pixel passes).
+        let depth = DepthBuffer::new(DEPTH, 64);
+        depth.clear();
+        let tested = small.fill(Rgb565::RED).with_depth([100, 200, 300], depth);
+        begin();
+        let Ok(()) = black_box(&tested).draw(black_box(&mut *FB));
         end();
         let line = super::builtin_scene::star_line(1, 100)
             .stroke(Rgb565::RED)
