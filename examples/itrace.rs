@@ -55,8 +55,8 @@ mod target {
     use embedded_graphics_core::{geometry::Point, Drawable};
     use embedded_raster::{
         band::DisplayList,
-        shade::DepthBuffer,
         framebuffer::{buffer_size, Rgb565Le},
+        shade::DepthBuffer,
         Framebuffer, Join, Line, Polyline, Span, SpanDrawable, Triangle,
     };
 
