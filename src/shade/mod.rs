@@ -684,8 +684,10 @@ mod tests {
     }
 
     /// The stepped `L_k` of every span's first pixel equal the definition's,
-    /// for random triangles from 1/4096 px to 2^18 px across (slivers among
-    /// them), in clip windows that cut them anywhere: spans a row apart
+    /// for random triangles with corners from 1 px to 2^20 px around a
+    /// centre (clamped to the 20.12 range, so that the doubled area and
+    /// the stepped values reach the bounds of `SpanLambdas`' doc; slivers
+    /// among them), in clip windows that cut them anywhere: spans a row apart
     /// whose starts move either way by up to `STEPPED_COLUMNS` and more,
     /// rows skipped by thin triangles, and the first span of each.
     #[test]
@@ -695,7 +697,7 @@ mod tests {
         let (mut stepped, mut spans) = (0, 0);
         for case in 0..3_000 {
             // Corners within 2^(12 + scale) raw units of a random centre.
-            let scale = (next() % 19) as u32;
+            let scale = (next() % 21) as u32;
             let centre = ((next() % 200) as i32 * 4096, (next() % 200) as i32 * 4096);
             let mut corner = || {
                 let span = 1i64 << (12 + scale);
@@ -712,8 +714,12 @@ mod tests {
             let c = match case % 4 {
                 0 => {
                     let (a, b) = (a.raw(), b.raw());
-                    let jitter = (next() % 65) as i32 - 32;
-                    Vertex::from_raw(a.0 / 2 + b.0 / 2 + jitter, a.1 / 2 + b.1 / 2 - jitter)
+                    let jitter = (next() % 65) as i64 - 32;
+                    let mid = |u: i32, v: i32, j: i64| {
+                        let m = (i64::from(u) + i64::from(v)) / 2 + j;
+                        m.clamp(i32::MIN.into(), i32::MAX.into()) as i32
+                    };
+                    Vertex::from_raw(mid(a.0, b.0, jitter), mid(a.1, b.1, -jitter))
                 }
                 _ => corner(),
             };
