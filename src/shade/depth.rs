@@ -9,7 +9,7 @@ use embedded_graphics_core::{
     Drawable,
 };
 
-use super::{round_fixed, shaded_spans, Frame, GouraudSetup, GouraudTriangle, Linear, ShadeColor};
+use super::{shaded_spans, whole, Frame, GouraudSetup, GouraudTriangle, Linear, ShadeColor};
 use crate::{clip::Bounds, span::Span, triangle::FilledTriangle};
 
 /// The depth a cleared [`DepthBuffer`] holds: farther than anything drawn
@@ -137,7 +137,8 @@ impl<'a> DepthBuffer<'a> {
     }
 
     /// Depth-tests the pixels of `span` (inside the buffer) whose 32.32
-    /// depth starts at `z` and steps by `dz`, storing the passing ones, and
+    /// depth, plus the `1/2` of its rounding (`Linear::at`), starts at `z`
+    /// and steps by `dz`, storing the passing ones, and
     /// calls `run(offset, len)` for each run of passing pixels. `|z| < 2^49`
     /// and `|dz| <= 2^48` (module `shade`: `Linear::new` stores larger steps
     /// as 0), so `z += dz` cannot overflow.
@@ -159,13 +160,13 @@ impl<'a> DepthBuffer<'a> {
             // Skip failing pixels, then store a run of passing ones. The
             // rounded depth is in 0..=65535 by the interpolation bound
             // (module `shade`), so the cast is exact.
-            while i < row.len() && round_fixed(z) as u16 >= row[i].get() {
+            while i < row.len() && whole(z) as u16 >= row[i].get() {
                 z += dz;
                 i += 1;
             }
             let first = i;
             while i < row.len() {
-                let here = round_fixed(z) as u16;
+                let here = whole(z) as u16;
                 if here >= row[i].get() {
                     break;
                 }

@@ -26,9 +26,10 @@
 //!   (divided for at a triangle's first span, then stepped exactly from
 //!   one span's first pixel to the next, with no division: `SpanLambdas`
 //!   in the source), then `v = 2^32 a_0 + round(((a_1 - a_0) L_1 + (a_2 -
-//!   a_0) L_2) / 2^28)`;
-//! - per pixel, one add `v += d` per attribute, and the output is
-//!   `floor(v / 2^32 + 1/2)`.
+//!   a_0) L_2) / 2^28) + 2^31`: the value plus the `1/2` of its rounding,
+//!   added once a span;
+//! - per pixel, one add `v += d` per attribute, and the output is `floor(v
+//!   / 2^32)`, the integer part (the value rounded).
 //!
 //! # The error bound
 //!
@@ -77,7 +78,8 @@ use crate::{
     triangle::Triangle,
 };
 
-/// `1/2` in 32.32 fixed point, for rounding.
+/// `1/2` in 32.32 fixed point, for rounding: added to a span's start
+/// values ([`Linear::at`]).
 const HALF: i64 = 1 << 31;
 
 /// The barycentric frame of a triangle: its raw vertices and doubled signed
@@ -103,11 +105,16 @@ impl Frame {
     /// `L_1, L_2` at the first pixels of the triangle's spans, one span
     /// after another ([`SpanLambdas`]).
     pub(crate) fn span_lambdas(&self) -> SpanLambdas<'_> {
+        // m = 2 |D| in 64 bits when below 2^63 (SpanLambdas' doc).
+        let m = u64::try_from(2 * self.area2.unsigned_abs())
+            .ok()
+            .filter(|&m| m < 1 << 63);
         SpanLambdas {
             frame: self,
+            m,
             last: None,
             t: [Divided::default(); 2],
-            steps: None,
+            steps: Steps::Unset,
         }
     }
 }
@@ -131,61 +138,82 @@ const STEPPED_COLUMNS: u32 = 8;
 /// and each step divided once by `m` the same way, a step is an add of
 /// quotients, an add of remainders and one carry: `q` is exactly `L_k`.
 ///
+/// In 64 bits, checked: `q` in `i64`, `r` in `u64`. The sizes are the
+/// triangle's own: at a span's first pixel `q` lies in `0..=2^60`; a step
+/// by a pixel changes it by about `2^60 / w` for a triangle `w` px wide
+/// across that step, so only slivers under a pixel wide have steps past
+/// `2^63` or sums that leave `i64` on the way. Stepping needs `m < 2^63`
+/// (the remainders' sum below `2 m` fits `u64`), which every triangle of
+/// under `2^37` square pixels meets; `|D| < 2^65` in the 20.12 range.
+/// Where a quotient does not fit, or `m` is larger, the span's first
+/// pixel is divided for in `i128` instead: the same values.
+///
 /// A 32-bit core divides 128 bits in software: on a Cortex-M4
 /// `.ci/itrace`'s 16 px triangle, Gouraud-shaded, took 71,845
 /// instructions with two divisions a span (54,418 of them dividing, then
 /// by shifts and subtractions, about 1,600 a division), and 33,714
-/// stepped; 19,451 now, with the division by estimates
-/// (`raster::wide`) and the other changes of that session.
-///
-/// Sizes: `|D| < 2^65`, so `m < 2^66`; at a span's first pixel `0 <= w_k
-/// <= |D|`, so `q` lies in `0..=2^60`; a step changes `w_k` by under
-/// `2^45`, so on the way (at most a row and [`STEPPED_COLUMNS`] columns
-/// from a first pixel) `|T_k| < 2^61 (2^65 + 2^49) < 2^127`: `q` and `r`
-/// fit `i128`, as do the steps' quotients (below `2^106`) and remainders.
+/// stepped in `i128`; 16,929 now, in 64 bits, with the division by
+/// estimates (`raster::wide`) and the other changes since (18,878 with
+/// them in `i128`).
 #[derive(Debug)]
 pub(crate) struct SpanLambdas<'a> {
     frame: &'a Frame,
+    /// `m = 2 |D|`, when below `2^63`: else no step is taken.
+    m: Option<u64>,
     /// The last span's first pixel, and `T_1, T_2` there.
     last: Option<(i32, i32)>,
     t: [Divided; 2],
     /// `T_1, T_2`'s steps a column right and a row down: set up at the
     /// first step.
-    steps: Option<[[Divided; 2]; 2]>,
+    steps: Steps,
+}
+
+/// The steps of [`SpanLambdas`], set up when first needed.
+#[derive(Debug, Clone, Copy)]
+enum Steps {
+    /// Not set up yet.
+    Unset,
+    /// A column right and a row down, for `T_1` and `T_2`.
+    Set([[Divided; 2]; 2]),
+    /// A step's quotient does not fit `i64`, or `m` is too large: every
+    /// span's first pixel is divided for.
+    None,
 }
 
 impl SpanLambdas<'_> {
-    /// `m = 2 |D|`, and whether `D` is negative (`s = -1`).
-    fn divisor(&self) -> (i128, bool) {
-        (2 * self.frame.area2.abs(), self.frame.area2 < 0)
-    }
-
     /// `L_1, L_2` at pixel `(x, y)`, the first pixel of the next span
     /// (in `0..=2^60` there, so `i64` holds them).
     pub(crate) fn at(&mut self, x: i32, y: i32) -> [i64; 2] {
+        self.move_to(x, y);
+        self.t.map(|t| t.q)
+    }
+
+    /// Moves to pixel `(x, y)`, by steps from the last span's first pixel
+    /// when it lies a row above and at most [`STEPPED_COLUMNS`] across,
+    /// else by division; `true` if it stepped.
+    fn move_to(&mut self, x: i32, y: i32) -> bool {
         let near = match self.last {
             Some((lx, ly)) => ly.checked_add(1) == Some(y) && lx.abs_diff(x) <= STEPPED_COLUMNS,
             None => false,
         };
         let stepped = match near {
-            true => self.step_to(x),
+            true => self.step_to(x).is_some(),
             false => false,
         };
         if !stepped {
             self.divide_at(x, y);
         }
         self.last = Some((x, y));
-        self.t
-            .map(|t| i64::try_from(t.q).unwrap_or(if t.q < 0 { i64::MIN } else { i64::MAX }))
+        stepped
     }
 
-    /// `T_1, T_2` at `(x, y)`, by division. Out of line, as are the
-    /// steps: inlined into [`at`](Self::at), with the column steps'
+    /// `T_1, T_2` at `(x, y)`, by division in `i128`. Out of line, as are
+    /// the steps: inlined into [`at`](Self::at), with the column steps'
     /// loop unrolled to its bound, the three took 8,848 bytes of flash on
     /// a Cortex-M4 at opt-level 3.
     #[inline(never)]
     fn divide_at(&mut self, x: i32, y: i32) {
-        let (m, s) = self.divisor();
+        let (m, s) = (2 * self.frame.area2.abs(), self.frame.area2 < 0);
         let p = &self.frame.p;
         let c = (i64::from(x) * 4096 + 2048, i64::from(y) * 4096 + 2048);
         for (k, t) in self.t.iter_mut().enumerate() {
@@ -195,45 +223,50 @@ impl SpanLambdas<'_> {
                 true => m / 2 - (w << 61),
                 false => m / 2 + (w << 61),
             };
-            *t = Divided::of(t_k, m);
+            let (q, r) = t_k.div_rem_floor(m).unwrap_or((0, 0));
+            // q is in 0..=2^60 at a span's first pixel; r is below m, and
+            // is only stepped from when m < 2^63.
+            *t = Divided {
+                q: i64::try_from(q).unwrap_or(if q < 0 { i64::MIN } else { i64::MAX }),
+                r: u64::try_from(r).unwrap_or(0),
+            };
         }
     }
 
     /// Steps `T_1, T_2` from the last span's first pixel a row down and to
-    /// column `x`; `false` if the steps cannot be set up (never, for a
-    /// triangle of non-zero area).
+    /// column `x`; `None` if the steps do not fit 64 bits (`T_1, T_2` are
+    /// then left part-way, and divided for again). Only the row step can
+    /// leave `i64` on the way to a lit pixel: the column steps then move
+    /// between two values that fit, monotonically.
     #[inline(never)]
-    fn step_to(&mut self, x: i32) -> bool {
-        let Some((lx, _)) = self.last else {
-            return false;
-        };
-        if self.steps.is_none() {
-            self.steps = Some(self.set_up_steps());
+    fn step_to(&mut self, x: i32) -> Option<()> {
+        let (lx, _) = self.last?;
+        let m = self.m?;
+        if let Steps::Unset = self.steps {
+            self.steps = self.set_up_steps(m).map_or(Steps::None, Steps::Set);
         }
-        let (m, _) = self.divisor();
-        let Self { t, steps, .. } = self;
-        let Some([column, row]) = steps else {
-            return false;
+        let Steps::Set([column, row]) = &self.steps else {
+            return None;
         };
-        for ((t, row), column) in t.iter_mut().zip(row).zip(column) {
-            t.add(*row, m);
+        for ((t, row), column) in self.t.iter_mut().zip(row).zip(column) {
+            t.add(*row, m)?;
             let column = match x > lx {
                 true => *column,
-                false => column.negated(m),
+                false => column.negated(m)?,
             };
             for _ in 0..x.abs_diff(lx) {
-                t.add(column, m);
+                t.add(column, m)?;
             }
         }
-        true
+        Some(())
     }
 
-    /// `T_1, T_2`'s steps a column right and a row down.
-    #[inline(never)]
-    fn set_up_steps(&self) -> [[Divided; 2]; 2] {
-        let (m, s) = self.divisor();
+    /// `T_1, T_2`'s steps a column right and a row down, if their
+    /// quotients fit `i64`.
+    fn set_up_steps(&self, m: u64) -> Option<[[Divided; 2]; 2]> {
+        let s = self.frame.area2 < 0;
         let p = &self.frame.p;
-        // s 2^61 4096 d.
+        // s 2^61 4096 d, below 2^106 (d below 2^33).
         let step = |d: i64| {
             let v = i128::from(d) << 73;
             Divided::of(if s { -v } else { v }, m)
@@ -242,54 +275,61 @@ impl SpanLambdas<'_> {
         for k in 0..2 {
             // w_k = (a - c) x (b - c) with a = p_(k+1), b = p_(k+2).
             let (a, b) = (p[(k + 2) % 3], p[k]);
-            steps[0][k] = step(a.1 - b.1);
-            steps[1][k] = step(b.0 - a.0);
+            steps[0][k] = step(a.1 - b.1)?;
+            steps[1][k] = step(b.0 - a.0)?;
         }
-        steps
+        Some(steps)
     }
 }
 
 /// A value `q m + r` kept as its floor quotient and remainder by a
-/// divisor `m > 0` that the caller keeps: `0 <= r < m`.
+/// divisor `0 < m < 2^63` that the caller keeps: `0 <= r < m`.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 struct Divided {
-    q: i128,
-    r: i128,
+    q: i64,
+    r: u64,
 }
 
 impl Divided {
-    /// `t` divided by `m > 0` (0 for `m <= 0`, which no caller passes).
-    /// One copy, called for each division.
+    /// `t` divided by `m`, if the quotient fits `i64` (`None` too for `m
+    /// = 0`, which no caller passes). One copy for the four steps.
     #[inline(never)]
-    fn of(t: i128, m: i128) -> Self {
-        let (q, r) = t.div_rem_floor(m).unwrap_or((0, 0));
-        Self { q, r }
+    fn of(t: i128, m: u64) -> Option<Self> {
+        let (q, r) = t.div_rem_floor(i128::from(m))?;
+        Some(Self {
+            q: i64::try_from(q).ok()?,
+            r: u64::try_from(r).ok()?,
+        })
     }
 
     /// Adds `step` (divided by the same `m`): the remainders' sum is below
-    /// `2 m`, so one carry at most. Out of line: the column steps' loop,
-    /// unrolled with it inlined, was 3 KB of flash on a Cortex-M4 at
-    /// opt-level 3.
-    #[inline(never)]
-    fn add(&mut self, step: Self, m: i128) {
-        self.q += step.q;
-        self.r += step.r;
-        if self.r >= m {
-            self.r -= m;
-            self.q += 1;
-        }
+    /// `2 m < 2^64`, so one carry at most. `None`, leaving the value
+    /// unchanged, if the quotient leaves `i64`.
+    #[inline]
+    fn add(&mut self, step: Self, m: u64) -> Option<()> {
+        let r = self.r + step.r;
+        let (r, carry) = match r >= m {
+            true => (r - m, 1),
+            false => (r, 0),
+        };
+        self.q = self.q.checked_add(step.q)?.checked_add(carry)?;
+        self.r = r;
+        Some(())
     }
 
     /// The value's negative, divided by the same `m`: `-(q m + r) = (-q -
     /// 1) m + (m - r)` for `r > 0`.
-    fn negated(self, m: i128) -> Self {
-        match self.r {
-            0 => Self { q: -self.q, r: 0 },
+    fn negated(self, m: u64) -> Option<Self> {
+        Some(match self.r {
+            0 => Self {
+                q: self.q.checked_neg()?,
+                r: 0,
+            },
             r => Self {
-                q: -self.q - 1,
+                q: self.q.checked_neg()?.checked_sub(1)?,
                 r: m - r,
             },
-        }
+        })
     }
 }
 
@@ -331,8 +371,9 @@ impl<const N: usize> Linear<N> {
     }
 
     /// The 32.32 values at the pixel whose barycentric coordinates are `l`
-    /// (a lit pixel: `l` in `[0, 2^60]`): `2^32 a_0 + floor((da_1 l_1 +
-    /// da_2 l_2 + 2^27) / 2^28)`.
+    /// (a lit pixel: `l` in `[0, 2^60]`), plus `1/2`: `2^32 a_0 +
+    /// floor((da_1 l_1 + da_2 l_2 + 2^27) / 2^28) + 2^31`, so that the
+    /// values stepped from them round by their integer part ([`whole`]).
     ///
     /// In `i64`, with each `l = 2^28 h + b` (`0 <= b < 2^28`): the products
     /// of the `h` are whole multiples of `2^28`, so the quotient is theirs
@@ -346,18 +387,20 @@ impl<const N: usize> Linear<N> {
         core::array::from_fn(|n| {
             let (d1, d2) = (self.da[0][n], self.da[1][n]);
             let frac = d1 * h1 + d2 * h2 + ((d1 * b1 + d2 * b2 + (1 << 27)) >> 28);
-            (self.a0[n] << 32) + frac
+            (self.a0[n] << 32) + frac + HALF
         })
     }
 }
 
-/// Rounds a 32.32 value to an integer (`floor(v + 1/2)`). The values
-/// carried are below `2^49` in magnitude (module docs: within `2^-12` of
-/// `0..=65535` at lit pixels, plus at most one step of at most `2^48` past
-/// the last one), so the sum cannot overflow.
+/// The integer part of a carried 32.32 value, which holds the `1/2` of
+/// its rounding ([`Linear::at`]): the attribute rounded. Folding the `1/2`
+/// in once a span saved an add with carry per channel and pixel (on a
+/// Cortex-M4, two instructions each). The values carried are below `2^49 +
+/// 2^31` in magnitude (module docs: within `2^-12` of `0..=65535` at lit
+/// pixels, plus at most one step of at most `2^48` past the last one).
 #[inline(always)]
-fn round_fixed(v: i64) -> i64 {
-    (v + HALF) >> 32
+fn whole(v: i64) -> i64 {
+    v >> 32
 }
 
 /// The colours of a span's pixels, stepped in 32.32 fixed point: the
@@ -383,7 +426,7 @@ impl<C: ShadeColor> Iterator for Ramp<C> {
         let steps = ch.iter_mut().zip(&mut self.v).zip(&self.d);
         for ((c, v), d) in steps.take(C::CHANNELS) {
             // In 0..=channel max by the module's bound: the cast is exact.
-            *c = round_fixed(*v) as u8;
+            *c = whole(*v) as u8;
             // |v| < 2^48 + 1 and |d| <= 2^48 (`Linear::new`): no overflow.
             *v += *d;
         }
@@ -653,7 +696,8 @@ mod tests {
             let wide = |v: i64| i128::from(v);
             let exact = (wide(a[0]) << 32)
                 + ((wide(a[1] - a[0]) * wide(l[0]) + wide(a[2] - a[0]) * wide(l[1]) + (1 << 27))
-                    >> 28);
+                    >> 28)
+                + (1 << 31);
             assert_eq!(i128::from(linear.at(l)[0]), exact, "{a:?} {l:?}");
         }
     }
@@ -664,23 +708,97 @@ mod tests {
     /// well as past them.
     #[test]
     fn divided_steps_carry_and_borrow_exactly() {
-        let divided = |t: i128, m: i128| Divided {
+        let divided = |t: i64, m: i64| Divided {
             q: t.div_euclid(m),
-            r: t.rem_euclid(m),
+            r: t.rem_euclid(m) as u64,
         };
         for m in 1..12 {
             for t in -40..40 {
-                assert_eq!(Divided::of(t, m), divided(t, m));
+                assert_eq!(Divided::of(t.into(), m as u64), Some(divided(t, m)));
                 for step in -40..40 {
                     let mut sum = divided(t, m);
-                    sum.add(divided(step, m), m);
+                    assert_eq!(sum.add(divided(step, m), m as u64), Some(()));
                     assert_eq!(sum, divided(t + step, m), "{t} + {step} by {m}");
                     let mut difference = divided(t, m);
-                    difference.add(divided(step, m).negated(m), m);
+                    let negated = divided(step, m).negated(m as u64).unwrap();
+                    assert_eq!(difference.add(negated, m as u64), Some(()));
                     assert_eq!(difference, divided(t - step, m), "{t} - {step} by {m}");
                 }
             }
         }
+        // At the ends of i64: a quotient that would leave it is refused,
+        // and the value is left as it was; the largest remainders carry.
+        let m = (1u64 << 63) - 1;
+        let top = Divided {
+            q: i64::MAX,
+            r: m - 1,
+        };
+        let mut v = top;
+        assert_eq!(v.add(Divided { q: 0, r: 1 }, m), None);
+        assert_eq!(v, top);
+        let mut v = top;
+        assert_eq!(v.add(Divided { q: -1, r: m - 1 }, m), Some(()));
+        assert_eq!(
+            v,
+            Divided {
+                q: i64::MAX,
+                r: m - 2
+            }
+        );
+        let bottom = Divided { q: i64::MIN, r: 0 };
+        assert_eq!(bottom.negated(m), None);
+        assert_eq!(Divided::of(i128::from(i64::MAX) * 3 + 3, 3), None);
+        assert_eq!(
+            Divided::of(i128::from(i64::MIN) * 3, 3),
+            Some(Divided { q: i64::MIN, r: 0 })
+        );
+    }
+
+    /// Steps whose sums leave `i64` on the way, in slivers a fraction of a
+    /// pixel thick: refused part-way, and the pixel divided for instead,
+    /// to the same values. Between any two pixels a row apart and up to
+    /// [`STEPPED_COLUMNS`] across whose `L_k` fit `i64` (lit or not).
+    #[test]
+    fn steps_past_i64_fall_back_to_division() {
+        let (mut refused, mut stepped) = (0, 0);
+        for thickness in [300, 600, 1200, 2400] {
+            for run in [0, 1, 3, 8] {
+                // A sliver from (0, 0) to (run, 8) px, `thickness` raw
+                // units wide across.
+                let end = (run * 4096, 8 * 4096);
+                let t = Triangle::new(
+                    Vertex::from_raw(0, 0),
+                    Vertex::from_raw(end.0, end.1),
+                    Vertex::from_raw(end.0 + thickness, end.1),
+                );
+                let frame = Frame::new(&t).unwrap();
+                let fits = |l: [i128; 2]| l.iter().all(|&v| i64::try_from(v).is_ok());
+                for y in -1..9 {
+                    for x in -9..run + 10 {
+                        let from = reference(&t, x, y);
+                        for dx in -(STEPPED_COLUMNS as i32)..=STEPPED_COLUMNS as i32 {
+                            let to = reference(&t, x + dx, y + 1);
+                            if !fits(from) || !fits(to) {
+                                continue;
+                            }
+                            let mut lambdas = frame.span_lambdas();
+                            lambdas.move_to(x, y);
+                            let moved = lambdas.move_to(x + dx, y + 1);
+                            assert_eq!(lambdas.t.map(|t| i128::from(t.q)), to, "{t:?}");
+                            match (moved, lambdas.steps) {
+                                (true, _) => stepped += 1,
+                                (false, Steps::Set(_)) => refused += 1,
+                                _ => {}
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            refused > 0 && stepped > 0,
+            "{refused} refused, {stepped} stepped"
+        );
     }
 
     /// The stepped `L_k` of every span's first pixel equal the definition's,
@@ -694,7 +812,7 @@ mod tests {
     fn stepped_span_lambdas_are_exact() {
         let mut random = xorshift(0x0DDB_1A5E_5EED_2026);
         let mut next = move || random.next().unwrap_or_default();
-        let (mut stepped, mut spans) = (0, 0);
+        let (mut stepped, mut spans, mut near_but_divided) = (0, 0, 0);
         for case in 0..3_000 {
             // Corners within 2^(12 + scale) raw units of a random centre.
             let scale = (next() % 21) as u32;
@@ -734,7 +852,8 @@ mod tests {
             let mut lambdas = frame.span_lambdas();
             let mut last: Option<(i32, i32)> = None;
             t.for_each_span(&clip, |span| {
-                let got = lambdas.at(span.x_start, span.y).map(i128::from);
+                let moved = lambdas.move_to(span.x_start, span.y);
+                let got = lambdas.t.map(|t| i128::from(t.q));
                 assert_eq!(
                     got,
                     reference(&t, span.x_start, span.y),
@@ -742,21 +861,24 @@ mod tests {
                     span.x_start,
                     span.y
                 );
-                if last.is_some_and(|(x, y)| {
+                let near = last.is_some_and(|(x, y)| {
                     y + 1 == span.y && x.abs_diff(span.x_start) <= STEPPED_COLUMNS
-                }) {
-                    stepped += 1;
-                }
+                });
+                assert!(near || !moved, "stepped from afar");
+                near_but_divided += usize::from(near && !moved);
+                stepped += usize::from(moved);
                 last = Some((span.x_start, span.y));
                 spans += 1;
                 Ok::<(), Infallible>(())
             })
             .unwrap();
         }
-        // Most spans were stepped to, and some divided for.
+        // Most spans were stepped to, and some divided for: some of them
+        // near enough to step to, but in a triangle whose steps do not
+        // fit 64 bits.
         assert!(
-            stepped * 2 > spans && stepped < spans,
-            "{stepped} of {spans}"
+            stepped * 2 > spans && stepped < spans && near_but_divided > 0,
+            "{stepped} of {spans} stepped, {near_but_divided} near but divided"
         );
     }
 }
