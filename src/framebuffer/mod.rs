@@ -535,7 +535,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
         // One row inside the buffer, as the shaded triangles' spans come:
         // written into it with no clipping.
         if let Some((row, xs)) = self.row_inside(area) {
-            F::write_span(row, xs, &mut colors.into_iter());
+            F::write_span(row, xs, colors.into_iter());
             return Ok(());
         }
         let bounds = self.bounding_box();

@@ -345,24 +345,24 @@ pub(crate) struct Linear<const N: usize> {
 impl<const N: usize> Linear<N> {
     pub(crate) fn new(frame: &Frame, values: [[i64; N]; 3]) -> Self {
         let p = &frame.p;
-        let mut a0 = [0; N];
+        let a0 = values[0];
         let mut da = [[0; N]; 2];
         let mut step = [0; N];
         for n in 0..N {
-            let a = values.map(|v| i128::from(v[n]));
-            a0[n] = values[0][n];
-            // Differences of values in 0..=65535.
-            let difference = |k: usize| i64::try_from(a[k] - a[0]).unwrap_or(0);
-            (da[0][n], da[1][n]) = (difference(1), difference(2));
-            // d w_k / dx per pixel: 4096 (y_(k+1) - y_(k+2)).
-            let num: i128 = (0..3)
-                .map(|k| a[k] * i128::from(p[(k + 1) % 3].1 - p[(k + 2) % 3].1))
+            let a = [values[0][n], values[1][n], values[2][n]];
+            // Values in 0..=65535 (`u8` channels, `u16` depths): every
+            // difference, product and sum here fits `i64`.
+            (da[0][n], da[1][n]) = (a[1] - a[0], a[2] - a[0]);
+            // d w_k / dx per pixel: 4096 (y_(k+1) - y_(k+2)); the raw `y`
+            // differences are below 2^33, so the sum is below 3 2^49.
+            let num: i64 = (0..3)
+                .map(|k| a[k] * (p[(k + 1) % 3].1 - p[(k + 2) % 3].1))
                 .sum();
             // A step over `2^48` (65536 units per pixel) cannot occur on a
             // span of two or more pixels (module docs): it is never used,
             // and is stored as 0 so that every sum below stays far inside
             // `i64`.
-            step[n] = i64::try_from(round_div((num * 4096) << 32, frame.area2))
+            step[n] = i64::try_from(round_div(i128::from(num) << 44, frame.area2))
                 .ok()
                 .filter(|d| d.unsigned_abs() <= 1 << 48)
                 .unwrap_or(0);

@@ -186,7 +186,7 @@ macro_rules! byte_format {
             fn write_span<I: Iterator<Item = $color>>(
                 row: &mut [u8],
                 xs: Range<usize>,
-                colors: &mut I,
+                colors: I,
             ) -> usize {
                 write_bytes(row, xs, colors, $encode)
             }

@@ -112,7 +112,9 @@ pub trait PixelFormat {
 
     /// Sets pixels `xs` of `row`, left to right, to colours taken from
     /// `colors`, and returns how many it set: `xs.len()`, or fewer if
-    /// `colors` ran out first. Takes no colour beyond those it sets.
+    /// `colors` ran out first. Takes no colour beyond those it sets, so
+    /// that a `&mut` iterator goes on with the next pixel in the next call;
+    /// one passed by value can be held in registers as it is stepped.
     ///
     /// The provided implementation calls
     /// [`write_pixel`](Self::write_pixel) for each pixel.
@@ -133,7 +135,7 @@ pub trait PixelFormat {
     fn write_span<I: Iterator<Item = Self::Color>>(
         row: &mut [u8],
         xs: Range<usize>,
-        colors: &mut I,
+        mut colors: I,
     ) -> usize {
         let mut written = 0;
         for x in xs {

@@ -287,7 +287,7 @@ macro_rules! packed_format {
             fn write_span<I: Iterator<Item = $color>>(
                 row: &mut [u8],
                 xs: Range<usize>,
-                colors: &mut I,
+                colors: I,
             ) -> usize {
                 Packed::<$bits, $msb_first>::write_span(row, xs, &mut colors.map($encode))
             }

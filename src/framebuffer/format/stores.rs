@@ -605,7 +605,7 @@ fn fill_blocks(blocks: &mut [[u32; 8]], word: u32) {
 pub(super) fn write_bytes<const B: usize, C, I: Iterator<Item = C>>(
     row: &mut [u8],
     xs: Range<usize>,
-    colors: &mut I,
+    mut colors: I,
     encode: impl Fn(C) -> [u8; B],
 ) -> usize {
     let Some(bytes) = byte_span::<B>(row, xs) else {
