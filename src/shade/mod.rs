@@ -67,12 +67,12 @@ mod depth;
 pub use color::{average_color, ShadeColor};
 pub use depth::{DepthBuffer, DepthTriangle, FAR};
 
-use core::marker::PhantomData;
+use core::{marker::PhantomData, num::NonZeroU128};
 
 use embedded_graphics_core::{draw_target::DrawTarget, Drawable};
 
 use crate::{
-    raster::wide::{orientation, round_div, Wide},
+    raster::wide::{orientation, Divisor},
     span::Span,
     triangle::FilledTriangle,
     triangle::Triangle,
@@ -88,6 +88,9 @@ const HALF: i64 = 1 << 31;
 pub(crate) struct Frame {
     p: [(i64, i64); 3],
     area2: i128,
+    /// `m = 2 |D|`, which every value of the triangle's shading is divided
+    /// by (`SpanLambdas`, `Linear`), prepared once.
+    divisor: Divisor,
 }
 
 impl Frame {
@@ -99,7 +102,18 @@ impl Frame {
         });
         // Raw coordinates are far below 2^62: exact (raster::wide).
         let area2 = orientation(p[0], p[1], p[2]);
-        (area2 != 0).then_some(Self { p, area2 })
+        let divisor = Divisor::new(NonZeroU128::new(2 * area2.unsigned_abs())?);
+        Some(Self { p, area2, divisor })
+    }
+
+    /// `round(n / D)`, halves up, as `floor((2 s n + |D|) / m)` for `s` the
+    /// sign of `D`; `None` if `2 |n| + |D|` does not fit `i128`.
+    fn round(&self, n: i128) -> Option<i128> {
+        let n = if self.area2 < 0 { n.checked_neg()? } else { n };
+        let t = n
+            .checked_mul(2)?
+            .checked_add(i128::try_from(self.area2.unsigned_abs()).ok()?)?;
+        self.divisor.floor_div_rem(t).map(|(q, _)| q)
     }
 
     /// `L_1, L_2` at the first pixels of the triangle's spans, one span
@@ -214,7 +228,7 @@ impl SpanLambdas<'_> {
     #[inline(never)]
     fn divide_at(&mut self, x: i32, y: i32) {
         let (m, s) = (2 * self.frame.area2.abs(), self.frame.area2 < 0);
-        let p = &self.frame.p;
+        let (p, divisor) = (&self.frame.p, &self.frame.divisor);
         let c = (i64::from(x) * 4096 + 2048, i64::from(y) * 4096 + 2048);
         for (k, t) in self.t.iter_mut().enumerate() {
             // (a - c) x (b - c): the orientation of c, a, b.
@@ -223,7 +237,7 @@ impl SpanLambdas<'_> {
                 true => m / 2 - (w << 61),
                 false => m / 2 + (w << 61),
             };
-            let (q, r) = t_k.div_rem_floor(m).unwrap_or((0, 0));
+            let (q, r) = divisor.floor_div_rem(t_k).unwrap_or((0, 0));
             // q is in 0..=2^60 at a span's first pixel; r is below m, and
             // is only stepped from when m < 2^63.
             *t = Divided {
@@ -243,7 +257,7 @@ impl SpanLambdas<'_> {
         let (lx, _) = self.last?;
         let m = self.m?;
         if let Steps::Unset = self.steps {
-            self.steps = self.set_up_steps(m).map_or(Steps::None, Steps::Set);
+            self.steps = self.set_up_steps().map_or(Steps::None, Steps::Set);
         }
         let Steps::Set([column, row]) = &self.steps else {
             return None;
@@ -263,13 +277,13 @@ impl SpanLambdas<'_> {
 
     /// `T_1, T_2`'s steps a column right and a row down, if their
     /// quotients fit `i64`.
-    fn set_up_steps(&self, m: u64) -> Option<[[Divided; 2]; 2]> {
+    fn set_up_steps(&self) -> Option<[[Divided; 2]; 2]> {
         let s = self.frame.area2 < 0;
-        let p = &self.frame.p;
+        let (p, divisor) = (&self.frame.p, &self.frame.divisor);
         // s 2^61 4096 d, below 2^106 (d below 2^33).
         let step = |d: i64| {
             let v = i128::from(d) << 73;
-            Divided::of(if s { -v } else { v }, m)
+            Divided::of(if s { -v } else { v }, divisor)
         };
         let mut steps = [[Divided::default(); 2]; 2];
         for k in 0..2 {
@@ -291,11 +305,11 @@ struct Divided {
 }
 
 impl Divided {
-    /// `t` divided by `m`, if the quotient fits `i64` (`None` too for `m
-    /// = 0`, which no caller passes). One copy for the four steps.
+    /// `t` divided by `m`, if the quotient and the remainder fit. One copy
+    /// for the four steps.
     #[inline(never)]
-    fn of(t: i128, m: u64) -> Option<Self> {
-        let (q, r) = t.div_rem_floor(i128::from(m))?;
+    fn of(t: i128, m: &Divisor) -> Option<Self> {
+        let (q, r) = m.floor_div_rem(t)?;
         Some(Self {
             q: i64::try_from(q).ok()?,
             r: u64::try_from(r).ok()?,
@@ -362,8 +376,9 @@ impl<const N: usize> Linear<N> {
             // span of two or more pixels (module docs): it is never used,
             // and is stored as 0 so that every sum below stays far inside
             // `i64`.
-            step[n] = i64::try_from(round_div(i128::from(num) << 44, frame.area2))
-                .ok()
+            step[n] = frame
+                .round(i128::from(num) << 44)
+                .and_then(|d| i64::try_from(d).ok())
                 .filter(|d| d.unsigned_abs() <= 1 << 48)
                 .unwrap_or(0);
         }
@@ -714,7 +729,8 @@ mod tests {
         };
         for m in 1..12 {
             for t in -40..40 {
-                assert_eq!(Divided::of(t.into(), m as u64), Some(divided(t, m)));
+                let divisor = Divisor::new(NonZeroU128::new(m as u128).unwrap());
+                assert_eq!(Divided::of(t.into(), &divisor), Some(divided(t, m)));
                 for step in -40..40 {
                     let mut sum = divided(t, m);
                     assert_eq!(sum.add(divided(step, m), m as u64), Some(()));
@@ -747,9 +763,10 @@ mod tests {
         );
         let bottom = Divided { q: i64::MIN, r: 0 };
         assert_eq!(bottom.negated(m), None);
-        assert_eq!(Divided::of(i128::from(i64::MAX) * 3 + 3, 3), None);
+        let three = Divisor::new(NonZeroU128::new(3).unwrap());
+        assert_eq!(Divided::of(i128::from(i64::MAX) * 3 + 3, &three), None);
         assert_eq!(
-            Divided::of(i128::from(i64::MIN) * 3, 3),
+            Divided::of(i128::from(i64::MIN) * 3, &three),
             Some(Divided { q: i64::MIN, r: 0 })
         );
     }
