@@ -78,6 +78,8 @@
 pub(crate) mod pieces;
 mod row;
 
+use core::convert::Infallible;
+
 use embedded_graphics_core::{
     geometry::{Point, Size},
     primitives::Rectangle,
@@ -367,9 +369,24 @@ impl<'a> Stroke<'a> {
             while y0 < rows.end {
                 let y1 = rows.end.min(y0 + tall);
                 let tile = Tile::new(x0, x1, y0, y1);
-                mask.clear(stride, usize::try_from(y1 - y0).unwrap_or(MASK_WORDS));
-                let mut write = masked_runs(&mut mask, tile.rectangle.top_left, sink, color);
-                self.draw_tile(&tile, ends, &mut offsets, &mut write)?;
+                let rows = usize::try_from(y1 - y0).unwrap_or(MASK_WORDS);
+                mask.clear(stride, rows);
+                let origin = tile.rectangle.top_left;
+                let marked = self.draw_tile(
+                    &tile,
+                    ends,
+                    &mut offsets,
+                    &mut marked_runs(&mut mask, origin),
+                );
+                // Marking cannot fail.
+                let Ok(()) = marked;
+                mask.for_each_run(rows, |row, s, e| {
+                    // A run of the tile's rows and columns (below 2^13):
+                    // from its top-left pixel, a `Point`, to at most the
+                    // tile's right side, which fits `u32`.
+                    let (y, x) = (origin.y + row as i32, origin.x + s as i32);
+                    write_run(sink, y, x, (e - s) as u32, color)
+                })?;
                 y0 = y1;
             }
             x0 = x1;
@@ -623,27 +640,22 @@ fn whole_runs<'a, C: Copy + 'a, S: SpanSink<C>>(
     move |y, x, len| write_run(sink, y, x, len, color)
 }
 
-/// Writes the pixels of runs not written yet in the tile whose top-left
-/// pixel is `origin`, as marked in its `mask`, and marks them. Always
-/// inlined, as is its closure (see [`as_runs`]).
+/// Marks runs in the `mask` of the tile whose top-left pixel is
+/// `origin`. Always inlined, as is its closure (see [`as_runs`]).
 #[inline(always)]
-fn masked_runs<'a, C: Copy + 'a, S: SpanSink<C>>(
-    mask: &'a mut Mask,
+fn marked_runs(
+    mask: &mut Mask,
     origin: Point,
-    sink: &'a mut S,
-    color: C,
-) -> impl FnMut(i32, i32, u32) -> Result<(), S::Error> + 'a {
+) -> impl FnMut(i32, i32, u32) -> Result<(), Infallible> + '_ {
     #[inline(always)]
     move |y, x, len| {
         // The mask counts from the tile's top-left pixel, in its own
-        // columns and rows (under 2^13, see `Mask::write_unset`); the run
-        // lies inside the tile: the differences do not overflow and are
-        // not negative.
+        // columns and rows (under 2^13, see `Mask::mark`); the run lies
+        // inside the tile: the differences do not overflow and are not
+        // negative.
         let (row, c) = ((y - origin.y) as usize, (x - origin.x) as usize);
-        mask.write_unset(row, c, c + len as usize, |s, e| {
-            // `s..e` lies within `c..c + len`, inside the tile.
-            write_run(sink, y, origin.x + s as i32, (e - s) as u32, color)
-        })
+        mask.mark(row, c, c + len as usize);
+        Ok(())
     }
 }
 

@@ -159,72 +159,82 @@ impl Mask {
         }
     }
 
-    /// Calls `write` with each run of columns of `c..end` in row `row` of
-    /// the tile (counted from its top-left pixel, all inside it) not
-    /// written yet, left to right, and marks them written.
-    ///
-    /// The tile's own columns and rows, in `usize`: on a 32-bit core this
-    /// is the stroke's inner loop, and the absolute coordinates were
-    /// 64-bit arithmetic there.
-    pub fn write_unset<E>(
-        &mut self,
-        row: usize,
-        mut c: usize,
-        end: usize,
-        mut write: impl FnMut(usize, usize) -> Result<(), E>,
-    ) -> Result<(), E> {
-        let stride = self.stride;
+    /// Marks columns `c..end` of row `row` of the tile (counted from its
+    /// top-left pixel, all inside it). In the tile's own columns and rows,
+    /// in `usize`: on a 32-bit core this is the stroke's inner loop, and
+    /// the absolute coordinates were 64-bit arithmetic there.
+    #[inline(always)]
+    pub fn mark(&mut self, row: usize, c: usize, end: usize) {
         // Inside the tile: its rows' words lie within the mask, and its
         // columns within a row's words.
-        debug_assert!((row + 1) * stride <= MASK_WORDS && end <= 32 * stride);
-        let start = row * stride;
-        let Some(row) = self.words.get_mut(start..start + stride) else {
-            return Ok(());
-        };
-        // Word by word: mark the span's bits, and carry the unwritten run
-        // that reaches the word's end into the next word.
-        let mut open: Option<usize> = None;
-        while c < end {
-            let (k, lo) = (c / 32, c % 32);
-            let hi = (end - 32 * k).min(32);
-            let Some(word) = row.get_mut(k) else {
-                break;
-            };
-            // Bits lo..hi: 1..=32 of them.
-            let span = u32::MAX >> (32 - (hi - lo)) << lo;
-            let free = !*word & span;
-            *word |= span;
-            if free != span {
-                // Runs start where a free bit follows a written one, end
-                // where a written bit follows a free one.
-                let written = !free & span;
-                let mut pos = lo;
-                loop {
-                    if let Some(s) = open {
-                        let ahead = written >> pos << pos;
-                        if ahead == 0 {
-                            break;
-                        }
-                        let e = ahead.trailing_zeros() as usize;
-                        write(s, 32 * k + e)?;
-                        open = None;
-                        pos = e;
-                    }
-                    let ahead = free >> pos << pos;
-                    if ahead == 0 {
-                        break;
-                    }
-                    let s = ahead.trailing_zeros() as usize;
-                    open = Some(32 * k + s);
-                    pos = s;
-                }
-            } else if open.is_none() {
-                open = Some(c);
-            }
-            c = 32 * k + hi;
+        debug_assert!((row + 1) * self.stride <= MASK_WORDS && end <= 32 * self.stride);
+        if c >= end {
+            return;
         }
-        if let Some(s) = open {
-            write(s, end)?;
+        let start = row * self.stride;
+        let (first, last) = (start + c / 32, start + (end - 1) / 32);
+        // Bits c % 32.. of the first word and ..=(end - 1) % 32 of the
+        // last; all of those between.
+        let (head, tail) = (u32::MAX << (c % 32), u32::MAX >> (31 - (end - 1) % 32));
+        match self.words.get_mut(first..=last) {
+            Some([word]) => *word |= head & tail,
+            Some([first, middle @ .., last]) => {
+                *first |= head;
+                middle.fill(u32::MAX);
+                *last |= tail;
+            }
+            _ => {}
+        }
+    }
+
+    /// Calls `write(row, start, end)` with each run of marked pixels of the
+    /// tile's first `rows` rows, row by row, left to right: each run as
+    /// long as it goes, so that a pixel many pieces mark is written once
+    /// and runs that touch are written as one.
+    pub fn for_each_run<E>(
+        &self,
+        rows: usize,
+        mut write: impl FnMut(usize, usize, usize) -> Result<(), E>,
+    ) -> Result<(), E> {
+        let stride = self.stride.max(1);
+        let used = self
+            .words
+            .get(..stride.saturating_mul(rows))
+            .unwrap_or_default();
+        for (row, words) in used.chunks_exact(stride).enumerate() {
+            // The start of a run that reaches the end of the word before.
+            let mut open: Option<usize> = None;
+            for (k, &word) in words.iter().enumerate() {
+                let base = 32 * k;
+                // Runs start at a marked bit after an unmarked one and end
+                // at an unmarked bit after a marked one; `pos` (below 32)
+                // is where the next one is looked for.
+                let mut pos = 0;
+                loop {
+                    match open {
+                        Some(s) => {
+                            let ahead = !word & u32::MAX << pos;
+                            if ahead == 0 {
+                                break;
+                            }
+                            pos = ahead.trailing_zeros();
+                            write(row, s, base + pos as usize)?;
+                            open = None;
+                        }
+                        None => {
+                            let ahead = word & u32::MAX << pos;
+                            if ahead == 0 {
+                                break;
+                            }
+                            pos = ahead.trailing_zeros();
+                            open = Some(base + pos as usize);
+                        }
+                    }
+                }
+            }
+            if let Some(s) = open {
+                write(row, s, 32 * stride)?;
+            }
         }
         Ok(())
     }
@@ -234,42 +244,39 @@ impl Mask {
 mod tests {
     use super::*;
 
-    /// `write_unset` against a plain array of flags: random runs in a
-    /// tile 3 words (90 px) wide and 2 rows tall, across word boundaries,
-    /// each pixel written once and exactly the runs' union written.
+    /// Marks and runs against a plain array of flags: random runs in a
+    /// tile 3 words (96 px) wide and 2 rows tall, across word boundaries;
+    /// the runs written are exactly the marks' union, each pixel once,
+    /// left to right with a gap between runs.
     #[test]
-    fn masked_runs_write_each_pixel_once() {
+    fn runs_are_the_union_of_the_marks() {
         let mut random = crate::raster::xorshift(0x9E37_79B9_7F4A_7C15);
-        for _ in 0..200 {
+        for case in 0..400 {
             let mut mask = Mask::new();
             mask.clear(3, 2);
-            let mut written = [[0u8; 90]; 2];
-            let mut want = [[false; 90]; 2];
-            for _ in 0..12 {
+            let mut want = [[false; 96]; 2];
+            for _ in 0..case % 13 {
                 let x = random.next().unwrap_or_default();
                 let row = (x % 2) as usize;
-                let (a, b) = (((x >> 8) % 91) as usize, ((x >> 20) % 91) as usize);
+                let (a, b) = (((x >> 8) % 97) as usize, ((x >> 20) % 97) as usize);
                 let (a, b) = (a.min(b), a.max(b));
                 want[row][a..b].fill(true);
-                let mut last = None;
-                mask.write_unset(row, a, b, |s, e| {
-                    assert!(
-                        a <= s && s < e && e <= b && last.is_none_or(|l| s > l),
-                        "{s}..{e} in {a}..{b}"
-                    );
-                    last = Some(e);
-                    for n in &mut written[row][s..e] {
-                        *n += 1;
-                    }
-                    Ok::<(), ()>(())
-                })
-                .unwrap();
+                mask.mark(row, a, b);
             }
-            for (w, r) in written.iter().zip(&want) {
-                for (&n, &lit) in w.iter().zip(r) {
-                    assert_eq!(n, u8::from(lit));
+            let mut written = [[0u8; 96]; 2];
+            let mut last: Option<(usize, usize)> = None;
+            mask.for_each_run(2, |row, s, e| {
+                let after = last.is_none_or(|(r, l)| row > r || (row == r && s > l));
+                assert!(s < e && e <= 96 && after, "{row}: {s}..{e} after {last:?}");
+                last = Some((row, e));
+                for n in &mut written[row][s..e] {
+                    *n += 1;
                 }
-            }
+                Ok::<(), ()>(())
+            })
+            .unwrap();
+            assert_eq!(written.map(|r| r.map(|n| n == 1)), want, "case {case}");
+            assert!(written.iter().flatten().all(|&n| n <= 1));
         }
     }
 }
