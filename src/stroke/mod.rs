@@ -118,9 +118,9 @@ use row::{Mask, Tile, MASK_BITS, MASK_WORDS};
 /// # Each pixel once, no gaps
 ///
 /// The pieces overlap on the inside of every turn and wherever the
-/// stroke crosses itself, so a mask of the pixels already written (1 KiB,
-/// for a tile of the target at a time) lets each piece write only the
-/// pixels no piece wrote before: every lit pixel is written exactly once.
+/// stroke crosses itself, so they mark the pixels they light in a mask
+/// (1 KiB, for a tile of the target at a time), and each run of marked
+/// pixels is then written once: every lit pixel is written exactly once.
 /// A sink on which overdraw is invisible
 /// ([`SpanSink::overdraw_is_invisible`](crate::SpanSink::overdraw_is_invisible):
 /// the crate's `Framebuffer`, through `draw_spans`) takes each piece
@@ -334,10 +334,10 @@ impl<'a> Stroke<'a> {
     /// by the raster core (two chains of edges, stepped a row at a time),
     /// a round join's disk sector, or a piece out of that range, found row
     /// by row ([`row::interval`]). Written each once, the box is cut into
-    /// tiles of at most [`MASK_WORDS`] 32-pixel words, and in each a
-    /// piece writes only the pixels no piece wrote before, marked in the
-    /// tile's mask; else the whole box is one tile, with no mask, and the
-    /// pieces overlap.
+    /// tiles of at most [`MASK_WORDS`] 32-pixel words; in each the pieces
+    /// mark their pixels in the tile's mask, and the mask's runs are
+    /// written, each as long as it goes ([`Mask::for_each_run`]). Else
+    /// the whole box is one tile, with no mask, and the pieces overlap.
     pub fn draw<C: Copy, S: SpanSink<C>>(&self, color: C, sink: &mut S) -> Result<(), S::Error> {
         let clip = Bounds::of(&sink.bounds());
         let rows = self.reach_of(1, clip.y0, clip.y1);
