@@ -5,6 +5,8 @@
 //! `i32`, `i64` and `i128` that the shape's own bounds allow; line
 //! clipping splits its quotients so that `u64` holds them all, and
 //! divides with [`div_rem_u64`], the same division as the 64-bit `Wide`.
+//! Many values divided by one number (a shaded triangle's doubled area)
+//! go through a [`Divisor`] prepared once.
 //! Callers pick the width from a stated bound, never by trying and
 //! wrapping: nothing here relies on wraparound, and every conversion down
 //! is checked.

@@ -369,8 +369,8 @@ impl<'a> Stroke<'a> {
             while y0 < rows.end {
                 let y1 = rows.end.min(y0 + tall);
                 let tile = Tile::new(x0, x1, y0, y1);
-                let rows = usize::try_from(y1 - y0).unwrap_or(MASK_WORDS);
-                mask.clear(stride, rows);
+                let tile_rows = usize::try_from(y1 - y0).unwrap_or(MASK_WORDS);
+                mask.clear(stride, tile_rows);
                 let origin = tile.rectangle.top_left;
                 let marked = self.draw_tile(
                     &tile,
@@ -380,7 +380,7 @@ impl<'a> Stroke<'a> {
                 );
                 // Marking cannot fail.
                 let Ok(()) = marked;
-                mask.for_each_run(rows, |row, s, e| {
+                mask.for_each_run(tile_rows, |row, s, e| {
                     // A run of the tile's rows and columns (below 2^13):
                     // from its top-left pixel, a `Point`, to at most the
                     // tile's right side, which fits `u32`.
