@@ -166,9 +166,10 @@ const STEPPED_COLUMNS: u32 = 8;
 /// `.ci/itrace`'s 16 px triangle, Gouraud-shaded, took 71,845
 /// instructions with two divisions a span (54,418 of them dividing, then
 /// by shifts and subtractions, about 1,600 a division), and 33,714
-/// stepped in `i128`; 16,929 now, in 64 bits, with the division by
-/// estimates (`raster::wide`) and the other changes since (18,878 with
-/// them in `i128`).
+/// stepped in `i128`; 18,878 with the division by estimates
+/// (`raster::wide`) and the other changes of the next session, 16,929
+/// with the steps in 64 bits, and 12,953 now, with the divisions by a
+/// prepared `Divisor` and the steps inlined.
 #[derive(Debug)]
 pub(crate) struct SpanLambdas<'a> {
     frame: &'a Frame,
@@ -221,10 +222,12 @@ impl SpanLambdas<'_> {
         stepped
     }
 
-    /// `T_1, T_2` at `(x, y)`, by division in `i128`. Out of line, as are
-    /// the steps: inlined into [`at`](Self::at), with the column steps'
-    /// loop unrolled to its bound, the three took 8,848 bytes of flash on
-    /// a Cortex-M4 at opt-level 3.
+    /// `T_1, T_2` at `(x, y)`, by division in `i128`. Out of line: with
+    /// the steps in `i128`, all inlined into [`at`](Self::at) and the
+    /// column steps' loop unrolled to its bound, they took 8,848 bytes of
+    /// flash on a Cortex-M4 at opt-level 3. In 64 bits the steps are
+    /// inlined (the 16 px Gouraud triangle of `.ci/itrace` 13,078 →
+    /// 12,953 instructions, 20 bytes less at "s", 32 more at opt-level 3).
     #[inline(never)]
     fn divide_at(&mut self, x: i32, y: i32) {
         let (m, s) = (2 * self.frame.area2.abs(), self.frame.area2 < 0);
@@ -252,7 +255,7 @@ impl SpanLambdas<'_> {
     /// then left part-way, and divided for again). Only the row step can
     /// leave `i64` on the way to a lit pixel: the column steps then move
     /// between two values that fit, monotonically.
-    #[inline(never)]
+    #[inline]
     fn step_to(&mut self, x: i32) -> Option<()> {
         let (lx, _) = self.last?;
         let m = self.m?;
