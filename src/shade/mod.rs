@@ -166,10 +166,11 @@ const STEPPED_COLUMNS: u32 = 8;
 /// `.ci/itrace`'s 16 px triangle, Gouraud-shaded, took 71,845
 /// instructions with two divisions a span (54,418 of them dividing, then
 /// by shifts and subtractions, about 1,600 a division), and 33,714
-/// stepped in `i128`; 18,878 with the division by estimates
-/// (`raster::wide`) and the other changes of the next session, 16,929
-/// with the steps in 64 bits, and 12,953 now, with the divisions by a
-/// prepared `Divisor` and the steps inlined.
+/// stepped in `i128`; 19,452 with the division by estimates
+/// (`raster::wide`) and the other changes of that session, 18,878 with
+/// the rounding's `1/2` added once a span, 16,929 with the steps in 64
+/// bits, and 12,953 now, with the divisions by a prepared `Divisor` and
+/// the steps inlined.
 #[derive(Debug)]
 pub(crate) struct SpanLambdas<'a> {
     frame: &'a Frame,
