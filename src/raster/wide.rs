@@ -328,7 +328,7 @@ pub(crate) struct Divisor {
 }
 
 impl Divisor {
-    /// `d`, prepared (one 128-bit division on a 32-bit target).
+    /// `d`, prepared (its reciprocal found on a 32-bit target).
     pub(crate) fn new(d: NonZeroU128) -> Self {
         let reciprocal = match (cfg!(target_pointer_width = "32"), u64::try_from(d.get())) {
             (true, Ok(d)) => reciprocal_of(d),
@@ -362,11 +362,65 @@ impl Divisor {
 fn reciprocal_of(d: u64) -> Option<(u32, u64, u64)> {
     let shift = d.leading_zeros();
     let normal = d.checked_shl(shift)?;
-    let normal_wide = NonZeroU128::new(normal.into())?;
-    // In 2^63..=2^64 for normal in 2^63..2^64; 2^64 (for normal = 2^63)
-    // is taken down to 2^64 - 1, still within 1 of the true value.
-    let (reciprocal, _) = div_rem_u128(1 << 127, normal_wide);
-    Some((shift, normal, u64::try_from(reciprocal).unwrap_or(u64::MAX)))
+    Some((shift, normal, reciprocal_of_normal(normal)))
+}
+
+/// `floor((2^127 - 1) / d)` for `d` in `2^63..2^64`, which is
+/// `min(floor(2^127 / d), 2^64 - 1)`: [`reciprocal_estimate`], then the
+/// divisors it falls short by (at most 5) added one at a time. On a
+/// Cortex-M4 about 120 instructions, where the 128-bit division
+/// ([`div_rem_u128`]) took 895.
+fn reciprocal_of_normal(d: u64) -> u64 {
+    debug_assert!(d >> 63 == 1);
+    let mut x = reciprocal_estimate(d);
+    // x <= floor((2^127 - 1) / d), so d x <= 2^127 - 1 and the loop
+    // stops at that floor, which is below 2^64.
+    let mut r = (u128::MAX >> 1) - product_u64(d, x);
+    while r >= u128::from(d) {
+        r -= u128::from(d);
+        x += 1;
+    }
+    x
+}
+
+/// An estimate of `f = 2^127 / d` for `d` in `2^63..2^64`, at most
+/// `floor((2^127 - 1) / d)` and at most 5 below it, by Newton's iteration
+/// for a reciprocal, `z' = z (2 - d z)`, which never exceeds `1 / d`
+/// (`z' = (1 - (1 - d z)^2) / d`) and squares the relative error `1 - d
+/// z`. Every rounding below is down, so each estimate stays at most its
+/// exact value, and every subtraction is of a smaller number.
+///
+/// - 16 bits from the 32-bit divider: with `u = floor(d / 2^32) + 1` (so
+///   `d < 2^32 u`, `u` in `2^31 + 1..=2^32`) and `a = floor(d / 2^48) +
+///   1` (`u <= 2^16 a`, `a` in `2^15 + 1..=2^16`), `x0 =
+///   floor((2^32 - 1) / a)` has `u x0 < 2^48`, and `e0 = 2^48 - u x0 <
+///   3 2^32` (relative error below `2^-15 + 2^-16`).
+/// - Two steps for `1 / u` in 64-bit words: `x1 <= 2^63 / u` falls short
+///   by less than `2^32 (3 2^-16)^2 + 1 = 10`, so `e1 = 2^63 - u x1 < 10
+///   u` and `e1 / 16 < 2^32`; then `x2 <= 2^95 / u < f` (since `2^32 u >
+///   d`) falls short of `2^95 / u` by less than `2^64 (10 2^-31)^2 + 33`
+///   (the step's error, then the 4 bits of `e1` dropped and the floor).
+/// - One step for `1 / d` in 128 bits: `e2 = 2^127 - d x2` is `2^95
+///   (2^32 u - d) / u + d (2^95 / u - x2) < 2^96 + 2^73`, so `e2 / 2^33 <
+///   2^64`, and `x3` falls short of `f` by less than `e2^2 / (2^127 d) +
+///   1`, that is below 5.001 (the Newton step's error, then the bits of
+///   `e2` dropped and the floor). It is below `f` (`x2 < f` makes the
+///   step's error nonzero), so at most `floor((2^127 - 1) / d)`, also for
+///   `d = 2^63`.
+fn reciprocal_estimate(d: u64) -> u64 {
+    let u = (d >> 32) + 1;
+    // Below 2^16 + 1 (`d >> 48 < 2^16`): no division by 0.
+    let a = (d >> 48) as u32 + 1;
+    let x0 = u64::from(u32::MAX / a);
+    let e0 = (1 << 48) - u * x0;
+    let x1 = (x0 << 15) + ((x0 * e0) >> 33);
+    let e1 = (1 << 63) - u * x1;
+    let x2 = (x1 << 32) + ((x1 * (e1 >> 4)) >> 27);
+    let e2 = (1 << 127) - product_u64(d, x2);
+    // Below 2^34.
+    let correction = (product_u64(x2, (e2 >> 33) as u64) >> 94) as u64;
+    // `x3` of the doc.
+    x2 + correction
 }
 
 /// `n / d` and `n % d` for `d = normal 2^-shift`, by [`Divisor`]'s
@@ -734,6 +788,39 @@ mod tests {
                 check(n, d);
             }
         }
+    }
+
+    /// The reciprocal's estimate against the native division: never above
+    /// `floor((2^127 - 1) / d)`, at most 5 below it, and corrected to it
+    /// exactly. Every value of the 16 top bits that the first estimate
+    /// divides by, each with the lowest and highest rest, the same for the
+    /// 32 top bits of random divisors, and random divisors.
+    #[test]
+    fn reciprocal_estimates_fall_short_by_at_most_5() {
+        let mut worst = 0;
+        let mut check = |d: u64| {
+            let exact = u64::try_from((u128::MAX >> 1) / u128::from(d)).unwrap();
+            let estimate = reciprocal_estimate(d);
+            assert!(estimate <= exact, "{d}: {estimate} over {exact}");
+            worst = worst.max(exact - estimate);
+            assert!(exact - estimate <= 5, "{d}: {estimate} for {exact}");
+            assert_eq!(reciprocal_of_normal(d), exact, "{d}");
+        };
+        let mut random = xorshift(0x2026_1207_8E3C_1B0F);
+        let mut next = move || random.next().unwrap_or(1);
+        for top in 1u64 << 15..1 << 16 {
+            for rest in [0, 1, (1 << 48) - 1, next() >> 16] {
+                check(top << 48 | rest);
+            }
+        }
+        for _ in 0..100_000 {
+            let top = next() | 1 << 63;
+            check(top);
+            check(top >> 32 << 32);
+            check(top | 0xFFFF_FFFF);
+        }
+        // The bound is what occurs: these divisors reach it.
+        assert_eq!(worst, 5);
     }
 
     /// The 32-bit targets' product against the native one.

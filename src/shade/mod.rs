@@ -169,8 +169,9 @@ const STEPPED_COLUMNS: u32 = 8;
 /// stepped in `i128`; 19,452 with the division by estimates
 /// (`raster::wide`) and the other changes of that session, 18,878 with
 /// the rounding's `1/2` added once a span, 16,929 with the steps in 64
-/// bits, and 12,953 now, with the divisions by a prepared `Divisor` and
-/// the steps inlined.
+/// bits, 12,953 with the divisions by a prepared `Divisor` and the steps
+/// inlined, and 12,145 now, with the divisor's reciprocal by Newton's
+/// iteration.
 #[derive(Debug)]
 pub(crate) struct SpanLambdas<'a> {
     frame: &'a Frame,
