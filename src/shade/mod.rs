@@ -170,8 +170,8 @@ const STEPPED_COLUMNS: u32 = 8;
 /// (`raster::wide`) and the other changes of that session, 18,878 with
 /// the rounding's `1/2` added once a span, 16,929 with the steps in 64
 /// bits, 12,953 with the divisions by a prepared `Divisor` and the steps
-/// inlined, and 12,145 now, with the divisor's reciprocal by Newton's
-/// iteration.
+/// inlined, 12,145 with the divisor's reciprocal by Newton's iteration,
+/// and 11,436 now, with the start values from 32 by 32-bit products.
 #[derive(Debug)]
 pub(crate) struct SpanLambdas<'a> {
     frame: &'a Frame,
@@ -355,23 +355,29 @@ impl Divided {
 /// `N` attributes linear over a triangle, with their per-pixel steps.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Linear<const N: usize> {
-    /// `a_0`, and `a_1 - a_0`, `a_2 - a_0` (values in `0..=65535`).
-    a0: [i64; N],
-    da: [[i64; N]; 2],
+    /// `2^32 a_0 + 2^31`: the value at vertex 0 in 32.32, with the `1/2`
+    /// of the rounding ([`at`](Self::at)).
+    base: [i64; N],
+    /// `a_1 - a_0`, `a_2 - a_0` (values in `0..=65535`): in `i32`, so that
+    /// a span's start multiplies 32 by 32 bits where it can.
+    da: [[i32; N]; 2],
     step: [i64; N],
 }
 
 impl<const N: usize> Linear<N> {
     pub(crate) fn new(frame: &Frame, values: [[i64; N]; 3]) -> Self {
         let p = &frame.p;
-        let a0 = values[0];
+        let mut base = [0; N];
         let mut da = [[0; N]; 2];
         let mut step = [0; N];
         for n in 0..N {
             let a = [values[0][n], values[1][n], values[2][n]];
             // Values in 0..=65535 (`u8` channels, `u16` depths): every
-            // difference, product and sum here fits `i64`.
-            (da[0][n], da[1][n]) = (a[1] - a[0], a[2] - a[0]);
+            // difference, product and sum here fits `i64`, the differences
+            // `i32`.
+            base[n] = (a[0] << 32) + HALF;
+            da[0][n] = i32::try_from(a[1] - a[0]).unwrap_or_default();
+            da[1][n] = i32::try_from(a[2] - a[0]).unwrap_or_default();
             // d w_k / dx per pixel: 4096 (y_(k+1) - y_(k+2)); the raw `y`
             // differences are below 2^33, so the sum is below 3 2^49.
             let num: i64 = (0..3)
@@ -387,7 +393,7 @@ impl<const N: usize> Linear<N> {
                 .filter(|d| d.unsigned_abs() <= 1 << 48)
                 .unwrap_or(0);
         }
-        Self { a0, da, step }
+        Self { base, da, step }
     }
 
     /// The 32.32 values at the pixel whose barycentric coordinates are `l`
@@ -395,19 +401,32 @@ impl<const N: usize> Linear<N> {
     /// floor((da_1 l_1 + da_2 l_2 + 2^27) / 2^28) + 2^31`, so that the
     /// values stepped from them round by their integer part ([`whole`]).
     ///
-    /// In `i64`, with each `l = 2^28 h + b` (`0 <= b < 2^28`): the products
-    /// of the `h` are whole multiples of `2^28`, so the quotient is theirs
-    /// plus that of the `b` terms, exactly. With `|da| <= 65535`, every
-    /// product and sum is below `2^53` for any `i64` `l`. On a Cortex-M4
-    /// the `i128` products took 449 instructions a Gouraud span
-    /// (`.ci/itrace`).
+    /// In `i64`, with each `l = 2^30 h + b` (`0 <= b < 2^30`, and `0 <= h
+    /// <= 2^30` for `l` in `[0, 2^60]`; for another `l` the values are
+    /// those of `h mod 2^31`, with no overflow): the products of the `h` are whole
+    /// multiples of `2^28`, so the quotient is `4 (da_1 h_1 + da_2 h_2)`
+    /// plus that of the `b` terms, exactly. Every product is of two `i32`
+    /// (one multiplication on a Cortex-M4) and below `2^46` in magnitude
+    /// (`|da| <= 65535`), every sum below `2^50`. On a Cortex-M4 the `i128`
+    /// products took 449 instructions a Gouraud span (`.ci/itrace`), the
+    /// `i64` ones (split at `2^28`) 179 with the span's call.
     fn at(&self, l: [i64; 2]) -> [i64; N] {
-        let split = |l: i64| (l >> 28, l & ((1 << 28) - 1));
+        // `h` is at most 2^30 for `l` in `[0, 2^60]`, as a lit pixel's
+        // coordinates are, and masked to 31 bits for any other; `b` is
+        // below 2^30: both casts are exact.
+        let split = |l: i64| {
+            (
+                ((l >> 30) & i64::from(i32::MAX)) as i32,
+                (l & ((1 << 30) - 1)) as i32,
+            )
+        };
         let ((h1, b1), (h2, b2)) = (split(l[0]), split(l[1]));
+        let product = |a: i32, b: i32| i64::from(a) * i64::from(b);
         core::array::from_fn(|n| {
             let (d1, d2) = (self.da[0][n], self.da[1][n]);
-            let frac = d1 * h1 + d2 * h2 + ((d1 * b1 + d2 * b2 + (1 << 27)) >> 28);
-            (self.a0[n] << 32) + frac + HALF
+            let high = product(d1, h1) + product(d2, h2);
+            let low = product(d1, b1) + product(d2, b2);
+            self.base[n] + 4 * high + ((low + (1 << 27)) >> 28)
         })
     }
 }
@@ -686,7 +705,8 @@ mod tests {
 
     /// The start values in `i64` against their definition in `i128`, for
     /// values across `0..=65535` and coordinates across `0..=2^60`, the
-    /// ends and the `2^28` boundaries of the split among them.
+    /// ends, the `2^30` boundaries of the split and the `2^28` ones of the
+    /// rounding among them.
     #[test]
     fn start_values_split_exactly() {
         let mut random = xorshift(0x5EED_0F5A_1157_A2B3);
@@ -699,6 +719,12 @@ mod tests {
             (1 << 28) - 1,
             1 << 28,
             (1 << 28) + 1,
+            (1 << 30) - 1,
+            1 << 30,
+            (1 << 30) + 1,
+            (1 << 31) - 1,
+            1 << 31,
+            (1 << 60) - 1,
             1 << 60,
         ];
         for case in 0..100_000 {
@@ -709,8 +735,8 @@ mod tests {
             };
             let l = [coordinate(), coordinate()];
             let linear = Linear::<1> {
-                a0: [a[0]],
-                da: [[a[1] - a[0]], [a[2] - a[0]]],
+                base: [(a[0] << 32) + (1 << 31)],
+                da: [[(a[1] - a[0]) as i32], [(a[2] - a[0]) as i32]],
                 step: [0],
             };
             let wide = |v: i64| i128::from(v);
