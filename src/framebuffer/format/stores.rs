@@ -605,15 +605,14 @@ fn fill_blocks(blocks: &mut [[u32; 8]], word: u32) {
 pub(super) fn write_bytes<const B: usize, C, I: Iterator<Item = C>>(
     row: &mut [u8],
     xs: Range<usize>,
-    mut colors: I,
+    colors: I,
     encode: impl Fn(C) -> [u8; B],
 ) -> usize {
     let Some(bytes) = byte_span::<B>(row, xs) else {
         return 0;
     };
     let mut written = 0;
-    for px in bytes.as_chunks_mut::<B>().0 {
-        let Some(color) = colors.next() else { break };
+    for (px, color) in bytes.as_chunks_mut::<B>().0.iter_mut().zip(colors) {
         *px = encode(color);
         written += 1;
     }
