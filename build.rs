@@ -31,6 +31,16 @@ fn main() {
     if target.starts_with("thumbv6m-") {
         println!("cargo:rustc-cfg=software_division");
     }
+    // `narrow_multiplier`: the target's cores multiply 32 by 32 bits into
+    // the low 32 bits only (ARMv6-M and ARMv8-M Baseline, no `umull`), so
+    // that a 64-bit product is a library call.
+    println!("cargo::rustc-check-cfg=cfg(narrow_multiplier)");
+    if ["thumbv6m-", "thumbv8m.base-"]
+        .iter()
+        .any(|arch| target.starts_with(arch))
+    {
+        println!("cargo:rustc-cfg=narrow_multiplier");
+    }
     // `optimize_for_size`: this crate is built at opt-level "s" or "z"
     // (Cargo's `OPT_LEVEL` for the profile being built, per-package
     // overrides included), where a few loops are written out that the
