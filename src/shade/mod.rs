@@ -406,12 +406,13 @@ impl<const N: usize> Linear<N> {
     /// values stepped from them round by their integer part ([`whole`]).
     ///
     /// In `i64`, with each `l = 2^30 h + b` (`0 <= b < 2^30`, and `0 <= h
-    /// <= 2^30` for `l` in `[0, 2^60]`; for another `l` the values are
-    /// those of `h mod 2^31`, with no overflow): the products of the `h` are whole
-    /// multiples of `2^28`, so the quotient is `4 (da_1 h_1 + da_2 h_2)`
-    /// plus that of the `b` terms, exactly. Every product is of two `i32`
-    /// (one multiplication on a Cortex-M4) and below `2^46` in magnitude
-    /// (`|da| <= 65535`), every sum below `2^50`. On a Cortex-M4 the `i128`
+    /// <= 2^30` for `l` in `[0, 2^60]`; for another `l`, `h` is taken
+    /// modulo `2^31`): the products of the `h` are whole multiples of
+    /// `2^28`, so the quotient is `4 (da_1 h_1 + da_2 h_2)` plus that of
+    /// the `b` terms, exactly. Every product is of two `i32` (one
+    /// multiplication on a Cortex-M4) and below `2^47` in magnitude (`|da|
+    /// <= 65535`), `4 (da_1 h_1 + da_2 h_2)` below `2^50`, and the value
+    /// below `2^51`: no overflow for any `l`. On a Cortex-M4 the `i128`
     /// products took 449 instructions a Gouraud span (`.ci/itrace`), the
     /// `i64` ones (split at `2^28`) 179 with the span's call.
     fn at(&self, l: [i64; 2]) -> [i64; N] {
