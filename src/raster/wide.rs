@@ -368,8 +368,8 @@ fn reciprocal_of(d: u64) -> Option<(u32, u64, u64)> {
 /// `floor((2^127 - 1) / d)` for `d` in `2^63..2^64`, which is
 /// `min(floor(2^127 / d), 2^64 - 1)`: [`reciprocal_estimate`], then the
 /// divisors it falls short by (at most 5) added one at a time. On a
-/// Cortex-M4 `Divisor::new` takes 156 instructions with it (`.ci/itrace`),
-/// where with the 128-bit division ([`div_rem_u128`]) that took 895.
+/// Cortex-M4 (`.ci/itrace`) `Divisor::new` takes 156 instructions in all;
+/// the 128-bit division ([`div_rem_u128`]) it replaces took 895 alone.
 fn reciprocal_of_normal(d: u64) -> u64 {
     debug_assert!(d >> 63 == 1);
     let mut x = reciprocal_estimate(d);
@@ -496,10 +496,10 @@ fn product_u32(a: u32, b: u32) -> u64 {
 
 /// `a b` in full, where a 64-bit product is a library call
 /// (`narrow_multiplier`: ARMv6-M, whose `muls` keeps the low 32 bits):
-/// four 16 by 16-bit products. On a Cortex-M0 (`.ci/itrace`) 23
-/// instructions a call, where `__aeabi_lmul`, a 64 by 64-bit product,
-/// takes 37: the Gouraud window 30,555 → 29,081. Inlined, 28,937, with
-/// 1,052 bytes more flash.
+/// four 16 by 16-bit products. In the ARMv6-M build (`.ci/itrace --target
+/// thumbv6m-none-eabi`) 23 instructions a call, where `__aeabi_lmul`, a
+/// 64 by 64-bit product, takes 37: the Gouraud window 30,555 → 29,081.
+/// Inlined, 28,937, with 1,052 bytes more flash.
 #[cfg(narrow_multiplier)]
 #[inline(never)]
 fn product_u32(a: u32, b: u32) -> u64 {
