@@ -1,5 +1,6 @@
-//! Triangles, polygons, lines and polylines at `i32` and 20.12 extremes,
-//! and the mesh arithmetic, from libFuzzer's bytes: the first byte picks
+//! Triangles (flat, Gouraud, depth-tested and outlined), polygons (filled
+//! and outlined), lines and polylines (every join) at `i32` and 20.12
+//! extremes, and the mesh arithmetic, from libFuzzer's bytes: the first byte picks
 //! the kind, the rest are its choices (`tests/common/fuzz_cases.rs`). Each
 //! is checked against the exact references of `tests/common` on every
 //! framebuffer format and on a `SimDisplay`, with overflow checks on.

@@ -15,8 +15,9 @@ use embedded_raster::{
         Gray8Bytes, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
     },
     mesh::{Camera, Rotation, Vec3},
+    shade::DepthBuffer,
     sim::{parse_scene, render_scene, render_scene_in_bands, render_scene_with, SimDisplay},
-    FillRule, Framebuffer, Line, LineAlgorithm, Polygon, Polyline, SpanDrawable, SpanSink,
+    FillRule, Framebuffer, Join, Line, LineAlgorithm, Polygon, Polyline, SpanDrawable, SpanSink,
     SubpixelPrecision, Triangle, TriangleAlgorithm, Vertex,
 };
 
@@ -77,9 +78,23 @@ fn vertex(r: &mut Rng, fx: i64, fy: i64) -> Vertex {
     Vertex::from_raw(raw(r, fx), raw(r, fy))
 }
 
+/// A stroke's width (thin, thick, huge, or anything up to 64) and join.
+fn stroke_style(r: &mut Rng) -> (u32, Join) {
+    let width = pick(r, &[1, 2, 3, 8, 1000, u32::MAX], |r| r.below(64) as u32);
+    let join = pick(r, &[Join::Miter, Join::Bevel], |_| Join::Round);
+    (width, join)
+}
+
+/// A 16 x 16 window near pixel `(fx, fy)` (within the 20.12 range).
+fn window_near(r: &mut Rng, fx: i64, fy: i64) -> Point {
+    let near = |f: i64, r: &mut Rng| (f + r.below(48) - 24) as i32;
+    Point::new(near(fx, r), near(fy, r))
+}
+
 /// Draws `target` on a `SimDisplay` and on a `Framebuffer` of every
 /// format, 16 x 16 at `origin` (through a [`View`]), and checks that they
-/// agree and nothing lands outside. At the origin, also through the
+/// agree, that nothing lands outside and, for a shape that promises it,
+/// that no pixel is written twice. At the origin, also through the
 /// framebuffers' own `SpanSink` (`draw_spans`: spans and lines written
 /// straight into their bytes). Returns the display's lit grid (write
 /// count > 0).
@@ -96,7 +111,14 @@ fn on_every_target(target: &Target, origin: Point) -> Grid {
     let mut lit = Grid::new(origin.x.into(), origin.y.into(), 16, 16);
     for j in 0..16 {
         for i in 0..16 {
-            if display.write_count(Point::new(i, j)) != Some(0) {
+            let count = display.write_count(Point::new(i, j));
+            if target.each_pixel_once() {
+                assert!(
+                    count <= Some(1),
+                    "written twice at ({i}, {j}) of {origin:?}"
+                );
+            }
+            if count != Some(0) {
                 lit.bump(i64::from(origin.x + i), i64::from(origin.y + j));
             }
         }
@@ -162,7 +184,11 @@ enum Target {
     Tri(Triangle),
     Poly(Vec<Vertex>, FillRule),
     Line(Line, LineAlgorithm, u32),
-    Polyline(Vec<Point>, LineAlgorithm, u32),
+    Polyline(Vec<Point>, LineAlgorithm, u32, Join),
+    /// A triangle's outline: width and join.
+    StrokedTri(Triangle, u32, Join),
+    /// A polygon's outline: width and join.
+    StrokedPoly(Vec<Vertex>, u32, Join),
 }
 
 /// `$target` styled in `$c`, written by `$method` (`draw` or `draw_spans`)
@@ -177,16 +203,38 @@ macro_rules! draw_with {
                 .with_rule(*rule)
                 .$method($d),
             Target::Line(l, a, w) => l.stroke($c).stroke_width(*w).algorithm(*a).$method($d),
-            Target::Polyline(p, a, w) => Polyline::new(p)
+            Target::Polyline(p, a, w, j) => Polyline::new(p)
                 .stroke($c)
                 .stroke_width(*w)
                 .algorithm(*a)
+                .join(*j)
+                .$method($d),
+            Target::StrokedTri(t, w, j) => t.stroke($c).stroke_width(*w).join(*j).$method($d),
+            Target::StrokedPoly(v, w, j) => Polygon::<8>::new(v)
+                .unwrap()
+                .stroke($c)
+                .stroke_width(*w)
+                .join(*j)
                 .$method($d),
         };
     }};
 }
 
 impl Target {
+    /// Whether the drawable writes each pixel at most once through a
+    /// `DrawTarget`, as the docs promise: filled shapes, thick lines, and
+    /// strokes over 1 px wide (1-pixel polylines and outlines may cross
+    /// themselves).
+    fn each_pixel_once(&self) -> bool {
+        match self {
+            Target::Tri(_) | Target::Poly(..) => true,
+            Target::Line(_, _, w)
+            | Target::Polyline(_, _, w, _)
+            | Target::StrokedTri(_, w, _)
+            | Target::StrokedPoly(_, w, _) => *w >= 2,
+        }
+    }
+
     /// Through `Drawable::draw`.
     fn draw<D: DrawTarget<Color = C, Error = core::convert::Infallible>, C: PixelColor>(
         &self,
@@ -233,6 +281,26 @@ pub fn triangle(r: &mut Rng) {
             assert_eq!(written, lit.get(i64::from(i), i64::from(j)) != 0, "{t:?}");
         }
     }
+    // Depth-tested against a cleared buffer, at depths nearer than `FAR`:
+    // every pixel passes, so exactly the same pixels, each written once.
+    let mut z = [0u16; 16 * 16];
+    let depth = DepthBuffer::new(&mut z, 16);
+    depth.clear();
+    let near = |r: &mut Rng| pick(r, &[0, 1, u16::MAX - 1], |r| r.below(65535) as u16);
+    let zs = [near(r), near(r), near(r)];
+    let mut d = SimDisplay::new(16, 16, Gray8::BLACK);
+    let Ok(()) = t.fill(Gray8::WHITE).with_depth(zs, depth).draw(&mut d);
+    assert_eq!(d.out_of_bounds_writes(), 0);
+    for j in 0..16 {
+        for i in 0..16 {
+            let count = d.write_count(Point::new(i, j));
+            let want = u32::from(lit.get(i64::from(i), i64::from(j)) != 0);
+            assert_eq!(count, Some(want), "{t:?} at depths {zs:?}");
+        }
+    }
+    // Its outline, in a window near its focus.
+    let (width, join) = stroke_style(r);
+    on_every_target(&Target::StrokedTri(t, width, join), window_near(r, fx, fy));
 }
 
 /// A polygon of 3 to 8 vertices under either rule, against the reference.
@@ -255,6 +323,9 @@ pub fn polygon(r: &mut Rng) {
     assert_same(&got, &reference_fill(&v, even_odd, x0, y0, 8, 8), &v);
     let lit = on_every_target(&Target::Poly(v.clone(), rule), Point::zero());
     assert_same(&lit, &reference_fill(&v, even_odd, 0, 0, 16, 16), &v);
+    // Its outline, in a window near its focus.
+    let (width, join) = stroke_style(r);
+    on_every_target(&Target::StrokedPoly(v, width, join), window_near(r, fx, fy));
 }
 
 /// The exact pixels of the polyline through `points` (one point: that
@@ -374,7 +445,8 @@ pub fn line_and_polyline(r: &mut Rng) -> bool {
     let points: Vec<Point> = (0..len).map(|_| point(r)).collect();
     let k = r.below(len as u64 - 1) as usize;
     let origin = window_on(r, points[k], points[k + 1]);
-    let lit = on_every_target(&Target::Polyline(points.clone(), a, width), origin);
+    let join = stroke_style(r).1;
+    let lit = on_every_target(&Target::Polyline(points.clone(), a, width, join), origin);
     check(&lit, &points, origin);
     exact
 }
