@@ -142,14 +142,14 @@ use row::{Mask, Tile, MASK_BITS, MASK_WORDS};
 ///
 /// Measured on the host, 8 px wide on a 320 x 240 framebuffer (`cargo
 /// bench --bench lines -- "thick polyline"`, one run on the build machine
-/// of 2026-12-05), mitred: a 21-point zigzag takes 15 µs through
-/// `draw_spans` (no mask) and 46 µs through `draw` (each pixel once), a
-/// noisy 320-point trace (each row crossed by about a hundred segments)
-/// 0.14 ms and 0.44 ms. The same segments drawn as separate thick lines,
-/// which overlap and leave notches, take 15 µs and 0.11 ms, and
-/// embedded-graphics 0.8's `Polyline` with the same stroke 1.1 ms and
-/// 12.1 ms, in the same run. On a Cortex-M4 (`.ci/itrace`) the zigzag
-/// takes 0.40 million instructions through `draw_spans` and 0.99 million
+/// of 2026-12-06, seventh session), mitred: a 21-point zigzag takes 19 µs
+/// through `draw_spans` (no mask) and 53 µs through `draw` (each pixel
+/// once), a noisy 320-point trace (each row crossed by about a hundred
+/// segments) 0.16 ms and 0.39 ms. The same segments drawn as separate
+/// thick lines, which overlap and leave notches, take 20 µs and 0.14 ms,
+/// and embedded-graphics 0.8's `Polyline` with the same stroke 1.4 ms and
+/// 16.4 ms, in the same run. On a Cortex-M4 (`.ci/itrace`) the zigzag
+/// takes 0.40 million instructions through `draw_spans` and 0.86 million
 /// through `draw`, its separate thick lines 0.30 million.
 ///
 /// # Ranges
