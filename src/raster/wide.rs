@@ -248,8 +248,9 @@ unsigned_division!(
 ///
 /// On a Cortex-M4 (`.ci/itrace`): a Gouraud-shaded 16 px triangle's nine
 /// divisions (quotients of about 60 bits) took 14,245 instructions by
-/// shifts and subtractions, and take 5,614 by estimates, about four
-/// rounds each.
+/// shifts and subtractions, and 5,614 by estimates, about four rounds
+/// each. The shading now divides by a prepared [`Divisor`] instead
+/// (1,955 for the same nine); this serves the other `u128` divisions.
 fn divide_by_estimates(n: u128, d: u128) -> (u128, u128) {
     let d_shift = (128 - d.leading_zeros()).saturating_sub(16);
     // Below 2^16, plus 1 when bits were dropped: at most 2^16.

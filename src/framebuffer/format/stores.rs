@@ -159,7 +159,7 @@ pub(super) fn byte_span<const B: usize>(row: &mut [u8], xs: Range<usize>) -> Opt
 /// rectangles of black took up to 2.8x the instructions of a colour's
 /// (Cortex-M4, `.ci/icount` with black: the 240 px triangle 52,683
 /// instructions through `memset`, 30,240 through the word path; 200 x 200
-/// rectangles 1.67 instructions a pixel, 0.59 now, as any colour's). The
+/// rectangles 1.67 instructions a pixel, 0.57 now, as any colour's). The
 /// ARMv6-M build, counted on QEMU's Cortex-M3 board, gains too on all but
 /// mid-sized triangles (in black: 240 px 60,414 → 49,640 instructions,
 /// rectangles 200 x 200 67,581 → 34,428, but 64 px triangles 158,942 →
