@@ -78,11 +78,15 @@ fn vertex(r: &mut Rng, fx: i64, fy: i64) -> Vertex {
     Vertex::from_raw(raw(r, fx), raw(r, fy))
 }
 
+/// Any of the joins.
+fn join(r: &mut Rng) -> Join {
+    pick(r, &[Join::Miter, Join::Bevel], |_| Join::Round)
+}
+
 /// A stroke's width (thin, thick, huge, or anything up to 64) and join.
 fn stroke_style(r: &mut Rng) -> (u32, Join) {
     let width = pick(r, &[1, 2, 3, 8, 1000, u32::MAX], |r| r.below(64) as u32);
-    let join = pick(r, &[Join::Miter, Join::Bevel], |_| Join::Round);
-    (width, join)
+    (width, join(r))
 }
 
 /// A 16 x 16 window near pixel `(fx, fy)` (within the 20.12 range).
@@ -445,7 +449,7 @@ pub fn line_and_polyline(r: &mut Rng) -> bool {
     let points: Vec<Point> = (0..len).map(|_| point(r)).collect();
     let k = r.below(len as u64 - 1) as usize;
     let origin = window_on(r, points[k], points[k + 1]);
-    let join = stroke_style(r).1;
+    let join = join(r);
     let lit = on_every_target(&Target::Polyline(points.clone(), a, width, join), origin);
     check(&lit, &points, origin);
     exact
