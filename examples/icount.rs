@@ -589,6 +589,10 @@ mod target {
         let batch = Batch::Lines(&[builtin_scene::FAR_LINE.stroke(BLUE)]);
         let label = "1 px wide, ends 10^6 px off-screen";
         row(&mut counter, FB, RECTS, "lines", label, batch, false);
+        // Its corners past the 20.12 range: found row by row.
+        let batch = Batch::ThickLines(&[builtin_scene::FAR_LINE.stroke(BLUE).stroke_width(3)]);
+        let label = "3 px wide, ends 10^6 px off-screen";
+        row(&mut counter, FB, RECTS, "lines", label, batch, false);
 
         // Polygons (active edge table).
         let mut hexagons = [[Vertex::default(); 6]; 32];

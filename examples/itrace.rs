@@ -125,6 +125,15 @@ mod target {
         begin();
         let Ok(()) = black_box(&line).draw_spans(black_box(FB));
         end();
+        // The same width with ends 10^6 px off-screen: its corners leave
+        // the 20.12 range, and its rows are found by edges set up in
+        // 128 bits.
+        let far = super::builtin_scene::FAR_LINE
+            .stroke(Rgb565::RED)
+            .stroke_width(3);
+        begin();
+        let Ok(()) = black_box(&far).draw_spans(black_box(FB));
+        end();
         let hex = super::builtin_scene::hexagon((100, 100), 9);
         let poly = embedded_raster::Polygon::<12>::new(&hex)
             .unwrap()

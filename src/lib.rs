@@ -92,7 +92,7 @@
 //! |---|---|---|
 //! | [`Vertex`] coordinates (triangles, polygons, Gouraud, depth, [`delaunay`]) | 20.12: `[-524288, 524288 - 1/4096]`; every `Vertex` and every raw `i32` ([`Vertex::from_raw`]) | conversions return [`CoordinateOutOfRange`], parsing [`ParseCoordinateError`] |
 //! | [`Point`] to `Vertex` ([`Triangle::from_points`]) | `-524288..=524287` | [`CoordinateOutOfRange`] |
-//! | [`Line`] and [`Polyline`] points | any `i32` | none: 1-pixel lines and thick polylines exact everywhere, clipped; thick single lines light nothing beyond the 20.12 range |
+//! | [`Line`] and [`Polyline`] points | any `i32` | none: 1-pixel and thick lines and polylines exact everywhere, clipped |
 //! | stroke width | any `u32` | 0 draws nothing, over 65535 drawn as 65535 |
 //! | clip rectangles, target bounds | any `Rectangle`, even past `i32::MAX` | clipped; empty ones draw nothing |
 //! | [`Span`], [`Run`], [`SpanSink`] coordinates and lengths | any `i32` / `u32` | empty spans draw nothing; sums saturate at `i32::MAX` |

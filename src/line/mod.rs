@@ -46,7 +46,9 @@
 //! around the centre line from `A`'s centre to `B`'s centre, extended by
 //! half a pixel at each end, corners rounded to 1/4096 px. It follows the
 //! crate's sampling rule, so it shares edges with adjacent filled shapes
-//! without gaps or overdraw.
+//! without gaps or overdraw. A line whose corners leave the 20.12 range
+//! is found row by row instead, with the same corners in `i64`: thick
+//! lines are exact over the whole `i32` plane.
 //!
 //! A thick [`Polyline`] is one stroke: its segments' rectangles (the same
 //! corners) joined by a [`Join`](crate::Join) (miter by default, bevel
@@ -54,7 +56,7 @@
 //! union, so each pixel is written once (into a sink on which overdraw is
 //! invisible, such as the framebuffer through `draw_spans`, the pieces are
 //! written whole instead, their overlaps twice) and no joint has a gap. A
-//! two-point thick polyline is the thick line (within the 20.12 range).
+//! two-point thick polyline is the thick line.
 
 mod bresenham;
 mod clip;
@@ -76,6 +78,7 @@ use crate::{
     polygon::monotone::{fill_monotone, Shape},
     raster::sink::{drawable_through_spans, SpanDrawable, SpanSink},
     span::Span,
+    stroke::fill_far_convex,
     triangle::Triangle,
 };
 use clip::Canonical;
@@ -286,14 +289,12 @@ pub struct Line {
 impl Line {
     /// Creates a line between two pixels.
     ///
-    /// Any `i32` coordinates: 1-pixel lines are exact over the whole `i32`
-    /// plane, clipped to the target with work proportional to the visible
-    /// pixels; thick lines light no pixel outside the 20.12 range
-    /// (`-524288..=524287`, module docs, "Thick lines"), and a thick line
-    /// with an end past it, or within `w + 4` px of its ends, may leave
-    /// unlit its pixels within `w + 4` px of those ends (its centre line
-    /// is cut there so that its corners stay in range). No input
-    /// overflows.
+    /// Any `i32` coordinates: 1-pixel and thick lines are exact over the
+    /// whole `i32` plane, clipped to the target. A 1-pixel line costs
+    /// work proportional to its visible pixels; a thick line whose
+    /// corners leave the 20.12 range (`-524288..=524287`, module docs,
+    /// "Thick lines") a division per side on each row of the target it
+    /// crosses. No input overflows.
     ///
     /// # Examples
     ///
@@ -665,12 +666,11 @@ fn draw_segment<C: PixelColor, S: SpanSink<C>>(
     color: C,
     sink: &mut S,
 ) -> Result<(), S::Error> {
-    let clip = sink.bounds();
     match width {
         0 => Ok(()),
         1 => source.draw_thin(&line, skip_end, color, sink),
-        w => match thick::corners(line.start, line.end, w, &clip) {
-            Some(c) => match fill_monotone(&c, Shape::Parallelogram, sink, color) {
+        w => match thick::corners(line.start, line.end, w) {
+            Ok(c) => match fill_monotone(&c, Shape::Parallelogram, sink, color) {
                 Some(done) => done,
                 // Over 131,072 px a side: the two triangles sharing its
                 // diagonal, which light the same pixels, in 64 bits (the
@@ -679,7 +679,8 @@ fn draw_segment<C: PixelColor, S: SpanSink<C>>(
                     .into_iter()
                     .try_for_each(|[a, b, d]| Triangle::new(a, b, d).fill(color).draw_spans(sink)),
             },
-            None => Ok(()),
+            // A corner past the 20.12 range.
+            Err(c) => fill_far_convex(&c, color, sink),
         },
     }
 }

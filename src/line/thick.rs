@@ -19,34 +19,29 @@
 //! two spans a row). A zero-length thick line is the `w x w` square
 //! around its pixel's centre.
 //!
-//! Corners must be [`Vertex`]es. When one would leave the 20.12 range, the
-//! centre line is first cut to the target's bounding box grown by
-//! `w / 2 + 2` px (parametrically, in exact rational arithmetic, the cut
-//! points rounded to the nearest 1/4096 px); nothing cut away can light a
-//! pixel of the target. Pixels beyond the 20.12 range are never lit, as
-//! for every filled shape, and when the cut is needed, neither are those
-//! within `w + 4` px of the range's ends.
+//! When a corner would leave the 20.12 range (a line with an end past
+//! it, or within about `w / 2 + 1` px of its ends), the parallelogram is
+//! filled as a stroke's pieces past that range are
+//! ([`fill_far_convex`](crate::stroke::fill_far_convex)): the same
+//! corners, in `i64`, each side an edge set up once in 128 bits and
+//! stepped in 64. So a thick line is exact over the whole `i32` plane, as
+//! a 1-pixel line is, and lights its pixels past the 20.12 range too.
 
-use embedded_graphics_core::{geometry::Point, primitives::Rectangle};
+use embedded_graphics_core::geometry::Point;
 
-use crate::{
-    clip::Bounds,
-    raster::wide::{div_sqrt, round_div},
-    vertex::{Vertex, ONE},
-};
+use crate::{raster::wide::div_sqrt, vertex::Vertex};
 
 /// Widths above this are drawn as this width.
 pub(crate) const MAX_WIDTH: u32 = 65535;
 
 /// The corners of the thick line, in order round it (a parallelogram:
-/// `c[0] + c[2] = c[1] + c[3]`), or `None` if nothing of it can be visible
-/// in `clip`.
+/// `c[0] + c[2] = c[1] + c[3]`): as vertices, or, if one lies outside the
+/// 20.12 range, in raw units (below `2^44` in magnitude).
 pub(crate) fn corners(
     start: Point,
     end: Point,
     width: u32,
-    clip: &Rectangle,
-) -> Option<[Vertex; 4]> {
+) -> Result<[Vertex; 4], [(i64, i64); 4]> {
     // In i64: centres within 2^43 raw units, offsets within 2^27, every
     // difference of two `i32` points within 2^32.
     let w = i64::from(width.min(MAX_WIDTH));
@@ -74,86 +69,21 @@ pub(crate) fn corners(
             (-scaled(dy, 2048 * w), scaled(dx, 2048 * w)),
         )
     };
-    let corners = |p0: (i64, i64), p1: (i64, i64)| {
-        [
-            (p0.0 - e.0 + n.0, p0.1 - e.1 + n.1),
-            (p1.0 + e.0 + n.0, p1.1 + e.1 + n.1),
-            (p1.0 + e.0 - n.0, p1.1 + e.1 - n.1),
-            (p0.0 - e.0 - n.0, p0.1 - e.1 - n.1),
-        ]
-    };
+    let (p0, p1) = (centre(start), centre(end));
+    let corners = [
+        (p0.0 - e.0 + n.0, p0.1 - e.1 + n.1),
+        (p1.0 + e.0 + n.0, p1.1 + e.1 + n.1),
+        (p1.0 + e.0 - n.0, p1.1 + e.1 - n.1),
+        (p0.0 - e.0 - n.0, p0.1 - e.1 - n.1),
+    ];
     let vertex = |(x, y): (i64, i64)| {
         Some(Vertex::from_raw(
             i32::try_from(x).ok()?,
             i32::try_from(y).ok()?,
         ))
     };
-    let (p0, p1) = (centre(start), centre(end));
-    let mut v = corners(p0, p1).map(vertex);
-    if v.iter().any(Option::is_none) {
-        let wide = |p: (i64, i64)| (i128::from(p.0), i128::from(p.1));
-        // The cut points lie within the 20.12 range: they fit i64.
-        let narrow = |p: (i128, i128)| Some((i64::try_from(p.0).ok()?, i64::try_from(p.1).ok()?));
-        let (c0, c1) = cut(wide(p0), wide(p1), i128::from(w), clip)?;
-        v = corners(narrow(c0)?, narrow(c1)?).map(vertex);
+    match corners.map(vertex) {
+        [Some(a), Some(b), Some(c), Some(d)] => Ok([a, b, c, d]),
+        _ => Err(corners),
     }
-    let [Some(a), Some(b), Some(c), Some(d)] = v else {
-        return None;
-    };
-    Some([a, b, c, d])
-}
-
-/// The part of the centre line `p0 -> p1` (raw units) inside `clip` grown
-/// by `w / 2 + 2` px, within the range where the corners stay 20.12.
-fn cut(
-    p0: (i128, i128),
-    p1: (i128, i128),
-    w: i128,
-    clip: &Rectangle,
-) -> Option<((i128, i128), (i128, i128))> {
-    let b = Bounds::of(clip);
-    let margin = (w / 2 + 2) * ONE as i128;
-    let (lo, hi) = (
-        i128::from(i32::MIN) + margin * 2,
-        i128::from(i32::MAX) - margin * 2,
-    );
-    let range = |a: i64, z: i64| {
-        let a = (i128::from(a) * 4096 - margin).max(lo);
-        let z = (i128::from(z) * 4096 + margin).min(hi);
-        (a <= z).then_some((a, z))
-    };
-    let (bx, by) = (range(b.x0, b.x1)?, range(b.y0, b.y1)?);
-    // Liang-Barsky with t = num / den, den > 0.
-    let (mut t0, mut t1) = ((0i128, 1i128), (1i128, 1i128));
-    let less = |a: (i128, i128), b: (i128, i128)| a.0 * b.1 < b.0 * a.1;
-    for (from, to, (a, z)) in [(p0.0, p1.0, bx), (p0.1, p1.1, by)] {
-        let d = to - from;
-        if d == 0 {
-            if from < a || from > z {
-                return None;
-            }
-            continue;
-        }
-        let frac = |v: i128| if d > 0 { (v - from, d) } else { (from - v, -d) };
-        let (enter, exit) = if d > 0 {
-            (frac(a), frac(z))
-        } else {
-            (frac(z), frac(a))
-        };
-        if less(t0, enter) {
-            t0 = enter;
-        }
-        if less(exit, t1) {
-            t1 = exit;
-        }
-    }
-    if less(t1, t0) {
-        return None;
-    }
-    let at = |t: (i128, i128)| {
-        // a + round((z - a) t), halves up (t.1 > 0).
-        let lerp = |a: i128, z: i128| a + round_div((z - a) * t.0, t.1);
-        (lerp(p0.0, p1.0), lerp(p0.1, p1.1))
-    };
-    Some((at(t0), at(t1)))
 }

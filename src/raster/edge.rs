@@ -233,6 +233,78 @@ impl<T: Wide> Edge<T> {
     }
 }
 
+impl Edge<i64> {
+    /// The edge along the line through `p` with direction `d` (`d.1 !=
+    /// 0`, either sign), on rows `0..=last`: `p` and `d` in an `Edge`'s
+    /// coordinates (column `i`'s centre at `x = 4096 i`, row `k` sampled
+    /// at `y = 4096 k`), each below `2^62` in magnitude, as
+    /// [`threshold_on_row`] takes them. Set up on row 0 in `i128` (two
+    /// divisions), then stepped in `i64` like any edge.
+    ///
+    /// For the lines that bound a shape far past the range an
+    /// [`Edge::new`] is set up in (a stroke's pieces beyond the 20.12
+    /// range), whose thresholds [`threshold_on_row`] would otherwise find
+    /// with a 128-bit division on every row. `None` if `d.1 = 0`, an
+    /// operand is out of bound, or the crossing on row 0 or on row `last`
+    /// (or the step) reaches `2^62`: the caller then finds each row's
+    /// threshold directly.
+    ///
+    /// The crossing of row `k` is `ceil(m_k / dy)` with `m_k = p.0 dy + (4096
+    /// k - p.1) dx` (`d` reversed if need be so that `dy > 0`); each product
+    /// is below `2^62 2^63 = 2^125`, and their sum `2^126`. The step `4096
+    /// dx = q dy + r` is below `2^74`. From row 0 on the crossing moves by
+    /// `q` or `q + 1` a row, so it stays within `|c_0| + last (|q| + 1)`,
+    /// which is checked; then every value the edge steps through fits
+    /// `i64` (module docs).
+    pub(crate) fn along_line(p: (i64, i64), d: (i64, i64), last: i32) -> Option<Self> {
+        const BOUND: i128 = 1 << 62;
+        let wide = i128::from;
+        if d.1 == 0 || [p.0, p.1, d.0, d.1].iter().any(|&v| wide(v).abs() >= BOUND) || last < 0 {
+            return None;
+        }
+        let (dx, dy) = match d.1 < 0 {
+            true => (-wide(d.0), -wide(d.1)),
+            false => (wide(d.0), wide(d.1)),
+        };
+        let one = wide(ONE.into());
+        let (q, r) = (dx * one).div_rem_floor(dy)?;
+        // ceil(m / dy) = -floor(-m / dy); the remainder of -m is c dy - m.
+        let m = wide(p.0) * dy - wide(p.1) * dx;
+        let (f, s) = (-m).div_rem_floor(dy)?;
+        let reach = f.abs() + wide(last.into()) * (q.abs() + 1) + one;
+        if reach >= BOUND || q.abs() >= BOUND {
+            return None;
+        }
+        let narrow = |v: i128| i64::try_from(v).ok();
+        Some(Self {
+            first_row: 0,
+            last_row: last,
+            biased: narrow(-f)? + bias::<i64>(),
+            s: narrow(s)?,
+            q: narrow(q)?,
+            r: narrow(r)?,
+            dy: narrow(dy)?,
+        })
+    }
+
+    /// The least and the greatest threshold on rows `0..=last_row` of an
+    /// edge from [`along_line`](Self::along_line) not yet stepped: from
+    /// row 0 the crossing moves by `q` or `q + 1` a row, always the same
+    /// way, so row `last_row`'s lies between `last_row q` and `last_row
+    /// (q + 1)` from row 0's (all below `2^62`, as `along_line` checked).
+    pub(crate) fn threshold_bounds(&self) -> (i64, i64) {
+        let rows = i64::from(self.last_row);
+        let (least, most) = (
+            self.biased + rows * self.q,
+            self.biased + rows * (self.q + 1),
+        );
+        (
+            (least >> SHIFT).min(self.threshold()),
+            (most >> SHIFT).max(self.threshold()),
+        )
+    }
+}
+
 /// The threshold column of one row for the line through `p` with
 /// direction `d` (`d.1 != 0`, either sign), found directly by one
 /// division instead of stepped: what an [`Edge`] along that line holds on
@@ -408,6 +480,80 @@ mod tests {
     /// The direct threshold against the exact reference: the lines of
     /// random edges in both directions, on rows inside and outside them,
     /// in both widths and at the bound of each.
+    /// Edges along lines far from their frame ([`Edge::along_line`])
+    /// against the exact reference, row by row: random lines of every
+    /// size up to the bound, in both directions. Refused only where a
+    /// crossing on the first or last row, or the step, lies past `2^60`.
+    #[test]
+    fn lines_stepped_from_afar_match_the_reference() {
+        let mut random = crate::raster::xorshift(0x6A09_E667_F3BC_C909);
+        let mut next = |bits: u32| {
+            let x = random.next().unwrap_or_default();
+            ((x >> 1) % (1 << bits)) as i64 - (1 << (bits - 1))
+        };
+        // ceil(x / 4096) of the crossing of row k, and the crossing ceil(x).
+        let reference = |p: (i64, i64), d: (i64, i64), k: i64| {
+            let (dx, dy) = (i128::from(d.0), i128::from(d.1));
+            let (dx, dy) = if dy < 0 { (-dx, -dy) } else { (dx, dy) };
+            let num = i128::from(p.0) * dy + (i128::from(k) * 4096 - i128::from(p.1)) * dx;
+            let ceil = |n: i128, d: i128| -((-n).div_euclid(d));
+            (ceil(num, 4096 * dy), ceil(num, dy))
+        };
+        let (mut stepped, mut refused) = (0, 0);
+        for bits in [14, 20, 31, 46, 61, 63] {
+            for _ in 0..3000 {
+                let p = (next(bits), next(bits));
+                // Steep and shallow: dy from 1 bit to 48.
+                let dy_bits = 1 + next(7).unsigned_abs() as u32 % 48;
+                let d = (next(bits.min(48)), next(dy_bits));
+                let last = next(8).abs() as i32;
+                let edge = Edge::along_line(p, d, last);
+                let within = [p.0, p.1, d.0, d.1]
+                    .iter()
+                    .all(|v| v.unsigned_abs() < 1 << 62);
+                if d.1 == 0 || !within {
+                    assert!(edge.is_none(), "{p:?} {d:?}");
+                    continue;
+                }
+                let Some(mut edge) = edge else {
+                    let ends = [reference(p, d, 0).1, reference(p, d, last.into()).1];
+                    let q = 4096 * i128::from(d.0) / i128::from(d.1);
+                    let far = ends.iter().chain([&q]).any(|v| v.abs() >= 1 << 60);
+                    assert!(far, "{p:?} {d:?} rows 0..={last} refused");
+                    refused += 1;
+                    continue;
+                };
+                assert_eq!((edge.first_row, edge.last_row), (0, last));
+                let (least, most) = edge.threshold_bounds();
+                for k in 0..=last {
+                    let want = reference(p, d, k.into()).0;
+                    assert_eq!(i128::from(edge.threshold()), want, "{p:?} {d:?} row {k}");
+                    assert!(
+                        (least..=most).contains(&edge.threshold()),
+                        "{p:?} {d:?} row {k}"
+                    );
+                    edge.step();
+                }
+                stepped += 1;
+            }
+        }
+        assert!(stepped > 9_000 && refused > 100, "{stepped} {refused}");
+        // A step of 2^59 raw units a row from the origin: the crossing of
+        // row 7 is below 2^62 and that of row 8 is not, so that stepping
+        // there would overflow.
+        let shallow = (1 << 47, 1);
+        let mut edge = Edge::along_line((0, 0), shallow, 7).expect("rows 0..=7");
+        for k in 0..=7 {
+            assert_eq!(
+                i128::from(edge.threshold()),
+                reference((0, 0), shallow, k).0
+            );
+            edge.step();
+        }
+        assert!(Edge::along_line((0, 0), shallow, 8).is_none());
+        assert!(Edge::along_line((0, 0), (-1 << 47, -1), 8).is_none());
+    }
+
     #[test]
     fn direct_thresholds_match_the_reference() {
         let mut random = crate::raster::xorshift(0x2545_F491_4F6C_DD1D);

@@ -44,9 +44,9 @@
 //! chains of edges from its top corner to its bottom one, stepped a row
 //! at a time with no division. A round join's disk sector, and a piece
 //! reaching past the 20.12 range, has its columns found row by row
-//! instead (a division per side by the raster core's one-row threshold,
-//! in 64 bits for any stroke on a screen and in 128 beyond, and an
-//! integer square root for the disk). Both light
+//! instead ([`RowWalk`]: each side an edge of the raster core along its
+//! line, set up once in 128 bits and stepped in 64, and an integer
+//! square root a row for the disk). Both light
 //! exactly the pixels whose nudged centres the piece holds; the pieces
 //! share their corner points exactly, and two pieces meeting along a
 //! line light each pixel on it once, through the nudge.
@@ -92,8 +92,8 @@ use crate::{
     span::Span,
     vertex::Vertex,
 };
-use pieces::{Piece, Pt, Segment};
-use row::{Mask, Tile, MASK_BITS, MASK_WORDS};
+use pieces::{Piece, Pt, Region, Segment};
+use row::{Mask, RowWalk, Tile, MASK_BITS, MASK_WORDS};
 
 /// How a thick stroke turns a corner: the shape filling the wedge the two
 /// segments leave on the outside of the turn.
@@ -333,31 +333,21 @@ impl<'a> Stroke<'a> {
     /// its pixels: a polygon piece whose corners are 20.12 vertices walked
     /// by the raster core (two chains of edges, stepped a row at a time),
     /// a round join's disk sector, or a piece out of that range, found row
-    /// by row ([`row::interval`]). Written each once, the box is cut into
+    /// by row ([`RowWalk`]). Written each once, the box is cut into
     /// tiles of at most [`MASK_WORDS`] 32-pixel words; in each the pieces
     /// mark their pixels in the tile's mask, and the mask's runs are
     /// written, each as long as it goes ([`Mask::for_each_run`]). Else
-    /// the whole box is one tile, with no mask, and the pieces overlap.
+    /// the whole box is one tile, with no mask, and the pieces overlap
+    /// ([`draw_overlapping`](Self::draw_overlapping)).
     pub fn draw<C: Copy, S: SpanSink<C>>(&self, color: C, sink: &mut S) -> Result<(), S::Error> {
-        let clip = Bounds::of(&sink.bounds());
-        let rows = self.reach_of(1, clip.y0, clip.y1);
-        let (Some(rows), Some(columns)) = (rows, self.reach_of(0, clip.x0, clip.x1)) else {
+        if sink.overdraw_is_invisible() {
+            return self.draw_overlapping(color, sink);
+        }
+        let Some((columns, rows)) = self.reach_in(&sink.bounds()) else {
             return Ok(());
         };
-        // A tile from column or row 2^31 on (of a clip that reaches there)
-        // holds no pixel a `Point` can name: the tiles end there, and each
-        // tile's top-left pixel is a `Point`.
-        let columns = columns.start..columns.end.min(1 << 31);
-        let rows = rows.start..rows.end.min(1 << 31);
         let ends = self.ends();
         let mut offsets = Offsets::new();
-        if sink.overdraw_is_invisible() {
-            if columns.is_empty() || rows.is_empty() {
-                return Ok(());
-            }
-            let tile = Tile::new(columns.start, columns.end, rows.start, rows.end);
-            return self.draw_tile(&tile, ends, &mut offsets, &mut whole_runs(sink, color));
-        }
         let mut mask = Mask::new();
         let mut x0 = columns.start;
         while x0 < columns.end {
@@ -392,6 +382,43 @@ impl<'a> Stroke<'a> {
             x0 = x1;
         }
         Ok(())
+    }
+
+    /// Writes each piece's pixels into `sink` whole, with no mask: where
+    /// pieces overlap, their pixels are written once by each.
+    fn draw_overlapping<C: Copy, S: SpanSink<C>>(
+        &self,
+        color: C,
+        sink: &mut S,
+    ) -> Result<(), S::Error> {
+        let Some((columns, rows)) = self.reach_in(&sink.bounds()) else {
+            return Ok(());
+        };
+        if columns.is_empty() || rows.is_empty() {
+            return Ok(());
+        }
+        let tile = Tile::new(columns.start, columns.end, rows.start, rows.end);
+        let mut offsets = Offsets::new();
+        self.draw_tile(
+            &tile,
+            self.ends(),
+            &mut offsets,
+            &mut whole_runs(sink, color),
+        )
+    }
+
+    /// The columns and rows of `clip` the stroke can light, each ending at
+    /// `2^31` at most: a tile from column or row `2^31` on (of a clip that
+    /// reaches there) holds no pixel a `Point` can name, and each tile's
+    /// top-left pixel is a `Point`.
+    fn reach_in(&self, clip: &Rectangle) -> Option<(core::ops::Range<i64>, core::ops::Range<i64>)> {
+        let clip = Bounds::of(clip);
+        let rows = self.reach_of(1, clip.y0, clip.y1)?;
+        let columns = self.reach_of(0, clip.x0, clip.x1)?;
+        Some((
+            columns.start..columns.end.min(1 << 31),
+            rows.start..rows.end.min(1 << 31),
+        ))
     }
 
     /// Calls `write` with each run of `tile` pixels the pieces light.
@@ -579,7 +606,7 @@ impl Offsets {
 /// run of `tile` pixels `piece` lights (a run may end at column `2^31`,
 /// past what a `Span` holds): a polygon of 20.12 corners walked by the
 /// raster core ([`monotone_spans`]: a convex piece is y-monotone),
-/// anything else row by row through [`row::interval`].
+/// anything else row by row ([`RowWalk`]).
 fn piece_spans<E>(
     piece: &Piece,
     tile: &Tile,
@@ -597,13 +624,26 @@ fn piece_spans<E>(
     let Some(region) = piece.region() else {
         return Ok(());
     };
-    // The rows whose samples 4096 j + 2048 lie in the piece's extent.
+    region_spans(&region, tile, emit)
+}
+
+/// Calls `emit` with the row, the first column and the length of each
+/// run of `tile` pixels `region` lights, row by row ([`RowWalk`]).
+fn region_spans<E>(
+    region: &Region,
+    tile: &Tile,
+    emit: &mut impl FnMut(i32, i32, u32) -> Result<(), E>,
+) -> Result<(), E> {
+    // The rows whose samples 4096 j + 2048 lie in the region's extent.
     let (lo, hi) = region.ys;
     let first = (lo.saturating_sub(2048) / 4096 - 1).max(tile.y0);
     let end = (hi.saturating_sub(2048) / 4096 + 2).min(tile.y1);
+    let mut walk = RowWalk::new(region, (tile.x0, tile.x1), first, end);
+    if walk.is_empty() {
+        return Ok(());
+    }
     for j in first..end {
-        // |j| < 2^32: the sample fits i64.
-        if let Some((a, b)) = row::interval(&region, j * 4096 + 2048) {
+        if let Some((a, b)) = walk.next_row() {
             let (a, b) = (a.clamp(tile.x0, tile.x1), b.clamp(tile.x0, tile.x1));
             // The tile's rows and columns before its far sides are
             // `Point` coordinates, and its sides fit `u32`.
@@ -614,6 +654,29 @@ fn piece_spans<E>(
         }
     }
     Ok(())
+}
+
+/// Fills the convex polygon `corners` (raw units below `2^46` in
+/// magnitude, in order round it, either winding) into `sink`, each pixel
+/// once, as a stroke's piece past the 20.12 range is: row by row, each
+/// side an edge set up once ([`RowWalk`]), only the rows and columns of
+/// the sink's bounds that its box reaches. A thick [`Line`](crate::Line)
+/// whose corners leave that range.
+pub(crate) fn fill_far_convex<C: Copy, S: SpanSink<C>>(
+    corners: &[Pt; 4],
+    color: C,
+    sink: &mut S,
+) -> Result<(), S::Error> {
+    let Some(tile) = Tile::around(corners, &sink.bounds()) else {
+        return Ok(());
+    };
+    // A corner past the 20.12 range lies past 2^31 raw units: the
+    // region's products need `i128`, as `Piece::region` would find. With
+    // no area, it lights nothing.
+    let Some(region) = Region::of_wide_polygon(corners) else {
+        return Ok(());
+    };
+    region_spans(&region, &tile, &mut whole_runs(sink, color))
 }
 
 /// `emit` taking a walk's spans, as runs. Always inlined, and so is its

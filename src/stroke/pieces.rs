@@ -96,7 +96,7 @@ pub(crate) enum Piece {
     },
 }
 
-/// A piece as the row-by-row fallback reads it ([`interval`](super::row::interval)):
+/// A piece as the row-by-row fallback reads it ([`RowWalk`](super::row::RowWalk)):
 /// up to four half-planes and, for a sector, its disk.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Region {
@@ -173,7 +173,7 @@ impl Region {
     /// [`of_polygon`](Self::of_polygon) in `i128`, out of line: one copy
     /// for the pieces far off any screen.
     #[inline(never)]
-    fn of_wide_polygon(v: &[Pt]) -> Option<Self> {
+    pub fn of_wide_polygon(v: &[Pt]) -> Option<Self> {
         let mut wide = [(0i128, 0i128); 4];
         for (slot, p) in wide.iter_mut().zip(v) {
             *slot = (p.0.into(), p.1.into());
