@@ -477,20 +477,13 @@ mod tests {
         }
     }
 
-    /// The direct threshold against the exact reference: the lines of
-    /// random edges in both directions, on rows inside and outside them,
-    /// in both widths and at the bound of each.
     /// Edges along lines far from their frame ([`Edge::along_line`])
     /// against the exact reference, row by row: random lines of every
     /// size up to the bound, in both directions. Refused only where a
     /// crossing on the first or last row, or the step, lies past `2^60`.
     #[test]
     fn lines_stepped_from_afar_match_the_reference() {
-        let mut random = crate::raster::xorshift(0x6A09_E667_F3BC_C909);
-        let mut next = |bits: u32| {
-            let x = random.next().unwrap_or_default();
-            ((x >> 1) % (1 << bits)) as i64 - (1 << (bits - 1))
-        };
+        let mut next = signed_bits(0x6A09_E667_F3BC_C909);
         // ceil(x / 4096) of the crossing of row k, and the crossing ceil(x).
         let reference = |p: (i64, i64), d: (i64, i64), k: i64| {
             let (dx, dy) = (i128::from(d.0), i128::from(d.1));
@@ -554,13 +547,22 @@ mod tests {
         assert!(Edge::along_line((0, 0), (-1 << 47, -1), 8).is_none());
     }
 
-    #[test]
-    fn direct_thresholds_match_the_reference() {
-        let mut random = crate::raster::xorshift(0x2545_F491_4F6C_DD1D);
-        let mut next = |bits: u32| {
+    /// Random values of `bits` bits, signed (`-2^(bits-1)..2^(bits-1)`),
+    /// from the generator seeded `seed`.
+    fn signed_bits(seed: u64) -> impl FnMut(u32) -> i64 {
+        let mut random = crate::raster::xorshift(seed);
+        move |bits| {
             let x = random.next().unwrap_or_default();
             ((x >> 1) % (1 << bits)) as i64 - (1 << (bits - 1))
-        };
+        }
+    }
+
+    /// The direct threshold against the exact reference: the lines of
+    /// random edges in both directions, on rows inside and outside them,
+    /// in both widths and at the bound of each.
+    #[test]
+    fn direct_thresholds_match_the_reference() {
+        let mut next = signed_bits(0x2545_F491_4F6C_DD1D);
         let mut lines = 0;
         for bits in [14, 20, 31, 48, 63] {
             for _ in 0..4000 {
