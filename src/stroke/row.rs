@@ -44,9 +44,9 @@ fn ceil_div(n: i64, d: i64) -> Option<i64> {
 ///
 /// On a Cortex-M4 (`.ci/icount`), a 3 px line with ends 10^6 px
 /// off-screen (one such piece, across about 110 of the screen's 240
-/// rows) took 581,494 instructions with each row's four thresholds divided in 128
-/// bits, 133,808 with them stepped, and takes 76,868 with the two ends'
-/// sides, which bound no row inside the screen, left out.
+/// rows) took 581,494 instructions with each row's four thresholds
+/// divided in 128 bits, 133,808 with them stepped, and takes 76,868 with
+/// the two ends' sides, which bound no row inside the screen, left out.
 pub(crate) struct RowWalk {
     /// The sides that can bound a row inside the tile, `count` of them.
     sides: [Side; 4],
@@ -253,18 +253,17 @@ pub(crate) struct Tile {
 impl Tile {
     /// The pixels of `clip` whose centres lie in the box of `points` (raw
     /// units below `2^46` in magnitude), up to column and row `2^31`
-    /// (past which no pixel is a `Point`); `None` if there are none.
+    /// (past which no pixel is a `Point`); `None` if there are none (or
+    /// no points).
     pub fn around(points: &[(i64, i64)], clip: &Rectangle) -> Option<Self> {
         let clip = Bounds::of(clip);
-        let (lo, hi) = points.iter().fold(
-            ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN)),
-            |(lo, hi), p| {
-                (
-                    (lo.0.min(p.0), lo.1.min(p.1)),
-                    (hi.0.max(p.0), hi.1.max(p.1)),
-                )
-            },
-        );
+        let (&start, rest) = points.split_first()?;
+        let (lo, hi) = rest.iter().fold((start, start), |(lo, hi), p| {
+            (
+                (lo.0.min(p.0), lo.1.min(p.1)),
+                (hi.0.max(p.0), hi.1.max(p.1)),
+            )
+        });
         // The first centre 4096 i + 2048 at or after `lo`, the last at or
         // before `hi`, and one past it.
         let first = |v: i64| ceil_div(v - HALF, ONE);
