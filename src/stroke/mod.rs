@@ -370,14 +370,23 @@ impl<'a> Stroke<'a> {
                 );
                 // Marking cannot fail.
                 let Ok(()) = marked;
-                mask.for_each_run(tile_rows, |row, s, e| {
+                let lit = mask.for_each_run(tile_rows, |row, s, e| {
                     // A run of the tile's rows and columns (below 2^13):
                     // from its top-left pixel, a `Point`, to at most the
                     // tile's right side, which fits `u32`.
                     let (y, x) = (origin.y + row as i32, origin.x + s as i32);
                     write_run(sink, y, x, (e - s) as u32, color)
                 })?;
-                y0 = y1;
+                y0 = match lit {
+                    true => y1,
+                    // Nothing here: on to the next rows the stroke
+                    // reaches in these columns (a stroke with points far
+                    // off a tall target crosses it in a few rows).
+                    false => match self.next_row_near((x0, x1), y1, ends) {
+                        Some(next) => next,
+                        None => break,
+                    },
+                };
             }
             x0 = x1;
         }
@@ -438,6 +447,51 @@ impl<'a> Stroke<'a> {
             }
         });
         result
+    }
+
+    /// The first row from `from` on whose centres lie within the stroke's
+    /// reach (in `y`) of a segment's part over columns `x0..x1` widened by
+    /// the reach ([`pieces::ys_within`]), or of its lone point: no row
+    /// between `from` and it has a pixel of those columns lit. `None` if
+    /// there is none. `O(n)` for `n` points, with two divisions a
+    /// segment that crosses the band's sides.
+    fn next_row_near(
+        &self,
+        (x0, x1): (i64, i64),
+        from: i64,
+        ends: Option<(usize, usize)>,
+    ) -> Option<i64> {
+        // Columns below 2^32, a reach below 2^30: no overflow.
+        let reach = self.reach();
+        let band = (x0 * 4096 + 2048 - reach, (x1 - 1) * 4096 + 2048 + reach);
+        let mut next: Option<i64> = None;
+        let mut take = |(lo, hi): (i64, i64)| {
+            // The rows whose centres 4096 j + 2048 lie in lo - reach ..=
+            // hi + reach (points below 2^46).
+            let first = -((-(lo - reach - 2048)).div_euclid(4096));
+            let last = (hi + reach - 2048).div_euclid(4096);
+            if last >= from {
+                let start = first.max(from);
+                next = Some(next.map_or(start, |n| n.min(start)));
+            }
+        };
+        match ends {
+            None => {
+                let p = self.outline.at(0);
+                if let Some(ys) = pieces::ys_within(p, (0, 0), band) {
+                    take(ys);
+                }
+            }
+            Some((first, last)) => {
+                for seg in (first..=last).filter_map(|k| self.segment(k)) {
+                    let d = (seg.b.0 - seg.a.0, seg.b.1 - seg.a.1);
+                    if let Some(ys) = pieces::ys_within(seg.a, d, band) {
+                        take(ys);
+                    }
+                }
+            }
+        }
+        next
     }
 
     /// The first and last segments with length; `None` if there are none.
@@ -634,8 +688,12 @@ fn region_spans<E>(
     tile: &Tile,
     emit: &mut impl FnMut(i32, i32, u32) -> Result<(), E>,
 ) -> Result<(), E> {
-    // The rows whose samples 4096 j + 2048 lie in the region's extent.
-    let (lo, hi) = region.ys;
+    // The rows whose samples 4096 j + 2048 lie in the extent of the
+    // region's part over the tile's columns (centres 4096 i + 2048).
+    let columns = (tile.x0 * 4096 + 2048, (tile.x1 - 1) * 4096 + 2048);
+    let Some((lo, hi)) = region.ys_within(columns) else {
+        return Ok(());
+    };
     let first = (lo.saturating_sub(2048) / 4096 - 1).max(tile.y0);
     let end = (hi.saturating_sub(2048) / 4096 + 2).min(tile.y1);
     let mut walk = RowWalk::new(region, (tile.x0, tile.x1), first, end);

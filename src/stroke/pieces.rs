@@ -70,6 +70,56 @@ pub(crate) struct Plane {
     pub o: i8,
 }
 
+/// The lowest and highest `y` (raw) of the segment from `a` to `a + d`
+/// (coordinates below `2^47` in magnitude) where its `x` lies in `xs`
+/// (`xs.0 <= xs.1`), rounded outwards; `None` if it has no such point.
+/// They lie at its ends inside the band or where it crosses the band's
+/// lines, `y = a.y + (x - a.x) d.y / d.x`: in `i64` when every value lies
+/// below `2^30` (any stroke on a screen: products below `2^62`), else in
+/// `i128` (below `2^96`).
+pub(crate) fn ys_within(a: Pt, d: Pt, xs: (i64, i64)) -> Option<(i64, i64)> {
+    let near = [a.0, a.1, d.0, d.1, xs.0, xs.1]
+        .iter()
+        .all(|v| v.unsigned_abs() < 1 << 30);
+    match near {
+        true => ys_within_in::<i64>(a, d, xs),
+        false => ys_within_in::<i128>(a, d, xs),
+    }
+}
+
+/// [`ys_within`] in `T`, whose bound the caller has checked.
+fn ys_within_in<T: Wide>(a: Pt, d: Pt, xs: (i64, i64)) -> Option<(i64, i64)> {
+    let wide = |v: i64| T::narrow(v);
+    let (a, d) = ((wide(a.0)?, wide(a.1)?), (wide(d.0)?, wide(d.1)?));
+    let b = (a.0 + d.0, a.1 + d.1);
+    let band = (wide(xs.0)?, wide(xs.1)?);
+    let inside = |x: T, (lo, hi): (T, T)| lo <= x && x <= hi;
+    let mut ys: Option<(T, T)> = None;
+    let mut take = |y: T| {
+        ys = Some(ys.map_or((y, y), |(lo, hi)| (lo.min(y), hi.max(y))));
+    };
+    for end in [a, b] {
+        if inside(end.0, band) {
+            take(end.1);
+        }
+    }
+    if d.0 != T::ZERO {
+        let span = (a.0.min(b.0), a.0.max(b.0));
+        for x in [band.0, band.1] {
+            if inside(x, span) {
+                // y = a.y + n / m, m > 0: floor and ceiling.
+                let (n, m) = ((x - a.0) * d.1, d.0);
+                let (n, m) = if m < T::ZERO { (-n, -m) } else { (n, m) };
+                let (floor, rest) = n.div_rem_floor(m)?;
+                take(a.1 + floor);
+                take(a.1 + floor + if rest > T::ZERO { T::ONE } else { T::ZERO });
+            }
+        }
+    }
+    let (lo, hi) = ys?;
+    Some((lo.to_i64()?, hi.to_i64()?))
+}
+
 /// A convex piece of a stroke: a polygon (a segment's parallelogram, a
 /// bevel or a miter's tip) or a round join's disk sector.
 ///
@@ -112,6 +162,25 @@ impl Region {
     /// The half-planes.
     pub fn planes(&self) -> &[Plane] {
         self.planes.get(..self.count).unwrap_or_default()
+    }
+
+    /// The lowest and highest `y` (raw, or beyond) of the region's part
+    /// whose `x` lies in `xs` (raw, `xs.0 <= xs.1`); `None` if it has none.
+    ///
+    /// A polygon's (its planes run along its sides, each from `a` to `a +
+    /// d`): that part is convex, so its extreme `y` lie at its corners,
+    /// which lie on the sides' parts in the band ([`ys_within`]). A
+    /// sector's extent is its disk's, small. So that a far piece's rows
+    /// are walked only where it meets the tile's columns, not all of a
+    /// tall target's.
+    pub fn ys_within(&self, xs: (i64, i64)) -> Option<(i64, i64)> {
+        if self.disk.is_some() {
+            return Some(self.ys);
+        }
+        self.planes()
+            .iter()
+            .filter_map(|h| ys_within(h.a, h.d, xs))
+            .reduce(|(lo, hi), (l, h)| (lo.min(l), hi.max(h)))
     }
 
     fn empty() -> Self {

@@ -345,12 +345,13 @@ impl Mask {
     /// Calls `write(row, start, end)` with each run of marked pixels of the
     /// tile's first `rows` rows, row by row, left to right: each run as
     /// long as it goes, so that a pixel many pieces mark is written once
-    /// and runs that touch are written as one.
+    /// and runs that touch are written as one. Whether there was a run.
     pub fn for_each_run<E>(
         &self,
         rows: usize,
         mut write: impl FnMut(usize, usize, usize) -> Result<(), E>,
-    ) -> Result<(), E> {
+    ) -> Result<bool, E> {
+        let mut any = false;
         let stride = self.stride.max(1);
         let used = self
             .words
@@ -374,6 +375,7 @@ impl Mask {
                             }
                             pos = ahead.trailing_zeros();
                             write(row, s, base + pos as usize)?;
+                            any = true;
                             open = None;
                         }
                         None => {
@@ -389,9 +391,10 @@ impl Mask {
             }
             if let Some(s) = open {
                 write(row, s, 32 * stride)?;
+                any = true;
             }
         }
-        Ok(())
+        Ok(any)
     }
 }
 
@@ -420,16 +423,18 @@ mod tests {
             }
             let mut written = [[0u8; 96]; 2];
             let mut last: Option<(usize, usize)> = None;
-            mask.for_each_run(2, |row, s, e| {
-                let after = last.is_none_or(|(r, l)| row > r || (row == r && s > l));
-                assert!(s < e && e <= 96 && after, "{row}: {s}..{e} after {last:?}");
-                last = Some((row, e));
-                for n in &mut written[row][s..e] {
-                    *n += 1;
-                }
-                Ok::<(), ()>(())
-            })
-            .unwrap();
+            let any = mask
+                .for_each_run(2, |row, s, e| {
+                    let after = last.is_none_or(|(r, l)| row > r || (row == r && s > l));
+                    assert!(s < e && e <= 96 && after, "{row}: {s}..{e} after {last:?}");
+                    last = Some((row, e));
+                    for n in &mut written[row][s..e] {
+                        *n += 1;
+                    }
+                    Ok::<(), ()>(())
+                })
+                .unwrap();
+            assert_eq!(any, want.iter().flatten().any(|&w| w), "case {case}");
             assert_eq!(written.map(|r| r.map(|n| n == 1)), want, "case {case}");
             assert!(written.iter().flatten().all(|&n| n <= 1));
         }

@@ -304,3 +304,104 @@ fn thick_lines_to_far_points_are_exact() {
     }
     assert!(far > 1000, "{far} of 3000 past the 20.12 range");
 }
+
+/// A sink as tall as `Rectangle` allows (every `i32` row) and 64 px wide,
+/// which keeps the pixels it is given (each at most once).
+struct TallSink {
+    lit: std::collections::BTreeMap<(i32, i32), u32>,
+}
+
+impl embedded_raster::SpanSink<Gray8> for TallSink {
+    type Error = core::convert::Infallible;
+
+    fn bounds(&self) -> embedded_graphics_core::primitives::Rectangle {
+        embedded_graphics_core::primitives::Rectangle::new(
+            Point::new(0, i32::MIN),
+            Size::new(64, u32::MAX),
+        )
+    }
+
+    fn fill_span(&mut self, span: embedded_raster::Span, _: Gray8) -> Result<(), Self::Error> {
+        for x in span.x_start..span.x_end {
+            *self.lit.entry((x, span.y)).or_default() += 1;
+        }
+        Ok(())
+    }
+}
+
+/// Thick lines and a thick polyline with ends far past the 20.12 range,
+/// through a target 64 px wide and 2^32 rows tall: their pieces are
+/// found row by row, and only the rows where they cross the target's
+/// columns are visited. Visiting all 2^32 took minutes (before
+/// 2026-12-06: the thick lines' rows, and the stroke's masked tiles), so
+/// the check runs under a watchdog of 60 s, against a few milliseconds.
+/// The pixels are the exact reference's on the rows around those lit,
+/// each written once.
+#[test]
+fn far_thick_lines_in_a_tall_target_visit_their_rows() {
+    let (done, finished) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        far_thick_lines_in_a_tall_target();
+        done.send(()).unwrap();
+    });
+    let waited = finished.recv_timeout(std::time::Duration::from_secs(60));
+    assert!(
+        !matches!(waited, Err(std::sync::mpsc::RecvTimeoutError::Timeout)),
+        "not done in 60 s: rows visited beyond the lines' own"
+    );
+    // A panic in the check drops the sender: fail with it.
+    waited.expect("the check panicked (see its message above)");
+}
+
+/// The check of [`far_thick_lines_in_a_tall_target_visit_their_rows`].
+fn far_thick_lines_in_a_tall_target() {
+    let lines = [
+        Line::new(
+            Point::new(-1_000_000_000, -333_000_000),
+            Point::new(2_000_000_000, 666_000_000),
+        ),
+        Line::new(
+            Point::new(i32::MIN, i32::MIN + 7),
+            Point::new(i32::MAX, i32::MAX),
+        ),
+        Line::new(Point::new(-7_000_000, 5), Point::new(9_000_000, 17)),
+    ];
+    for (k, line) in lines.into_iter().enumerate() {
+        let width = 3 + 4 * k as u32;
+        let mut sink = TallSink {
+            lit: Default::default(),
+        };
+        embedded_raster::SpanDrawable::draw_spans(
+            &line.stroke(Gray8::WHITE).stroke_width(width),
+            &mut sink,
+        )
+        .unwrap();
+        let ys: Vec<i32> = sink.lit.keys().map(|&(_, y)| y).collect();
+        let (lo, hi) = (*ys.iter().min().unwrap(), *ys.iter().max().unwrap());
+        assert!(
+            sink.lit.values().all(|&n| n == 1),
+            "{line:?}: a pixel written twice"
+        );
+        let corners = exact_corners(line, width);
+        for y in i64::from(lo) - 4..=i64::from(hi) + 4 {
+            for x in 0..64 {
+                let lit = sink.lit.contains_key(&(x as i32, y as i32));
+                assert_eq!(
+                    lit,
+                    exact_lit(&corners, x, y),
+                    "{line:?} w {width}: ({x}, {y})"
+                );
+            }
+        }
+        // The same line as a two-point thick polyline, a stroke.
+        let ends = [line.start, line.end];
+        let mut stroke = TallSink {
+            lit: Default::default(),
+        };
+        let polyline = Polyline::new(&ends)
+            .stroke(Gray8::WHITE)
+            .stroke_width(width);
+        embedded_raster::SpanDrawable::draw_spans(&polyline, &mut stroke).unwrap();
+        assert_eq!(stroke.lit, sink.lit, "{line:?}: the stroke");
+    }
+}
