@@ -173,8 +173,12 @@ const STEPPED_COLUMNS: u32 = 8;
 /// bits, 12,953 with the divisions by a prepared `Divisor` and the steps
 /// inlined, 12,145 with the divisor's reciprocal by Newton's iteration,
 /// 11,436 with the start values from 32 by 32-bit products, 11,211 with
-/// the pixels' writes zipped with the colours, and 10,894 now, with
-/// `Frame::new` inlined (no copies of the frame).
+/// the pixels' writes zipped with the colours, and 10,894 with
+/// `Frame::new` inlined (no copies of the frame). 11,385 since
+/// 2026-12-06 (eighth session) with this code unchanged: the compiler
+/// keeps fewer of [`at`](Self::at)'s column steps in registers since a
+/// change to the strokes (the window returns to 10,894 with the strokes'
+/// `next_row_near` left out).
 #[derive(Debug)]
 pub(crate) struct SpanLambdas<'a> {
     frame: &'a Frame,

@@ -74,50 +74,38 @@ pub(crate) struct Plane {
 /// (coordinates below `2^47` in magnitude) where its `x` lies in `xs`
 /// (`xs.0 <= xs.1`), rounded outwards; `None` if it has no such point.
 /// They lie at its ends inside the band or where it crosses the band's
-/// lines, `y = a.y + (x - a.x) d.y / d.x`: in `i64` when every value lies
-/// below `2^30` (any stroke on a screen: products below `2^62`), else in
-/// `i128` (below `2^96`).
+/// lines, `y = a.y + (x - a.x) d.y / d.x` (products below `2^96`, in
+/// `i128`; divided in 32 or 64 bits when the operands fit, see
+/// [`Wide::div_rem_floor`]).
 pub(crate) fn ys_within(a: Pt, d: Pt, xs: (i64, i64)) -> Option<(i64, i64)> {
-    let near = [a.0, a.1, d.0, d.1, xs.0, xs.1]
-        .iter()
-        .all(|v| v.unsigned_abs() < 1 << 30);
-    match near {
-        true => ys_within_in::<i64>(a, d, xs),
-        false => ys_within_in::<i128>(a, d, xs),
-    }
-}
-
-/// [`ys_within`] in `T`, whose bound the caller has checked.
-fn ys_within_in<T: Wide>(a: Pt, d: Pt, xs: (i64, i64)) -> Option<(i64, i64)> {
-    let wide = |v: i64| T::narrow(v);
-    let (a, d) = ((wide(a.0)?, wide(a.1)?), (wide(d.0)?, wide(d.1)?));
+    let wide = i128::from;
+    let (a, d) = ((wide(a.0), wide(a.1)), (wide(d.0), wide(d.1)));
     let b = (a.0 + d.0, a.1 + d.1);
-    let band = (wide(xs.0)?, wide(xs.1)?);
-    let inside = |x: T, (lo, hi): (T, T)| lo <= x && x <= hi;
-    let mut ys: Option<(T, T)> = None;
-    let mut take = |y: T| {
+    let band = wide(xs.0)..=wide(xs.1);
+    let mut ys: Option<(i128, i128)> = None;
+    let mut take = |y: i128| {
         ys = Some(ys.map_or((y, y), |(lo, hi)| (lo.min(y), hi.max(y))));
     };
     for end in [a, b] {
-        if inside(end.0, band) {
+        if band.contains(&end.0) {
             take(end.1);
         }
     }
-    if d.0 != T::ZERO {
-        let span = (a.0.min(b.0), a.0.max(b.0));
-        for x in [band.0, band.1] {
-            if inside(x, span) {
-                // y = a.y + n / m, m > 0: floor and ceiling.
+    if d.0 != 0 {
+        let span = a.0.min(b.0)..=a.0.max(b.0);
+        for &x in [band.start(), band.end()] {
+            if span.contains(&x) {
+                // y = a.y + n / m, m > 0: its floor and its ceiling.
                 let (n, m) = ((x - a.0) * d.1, d.0);
-                let (n, m) = if m < T::ZERO { (-n, -m) } else { (n, m) };
+                let (n, m) = if m < 0 { (-n, -m) } else { (n, m) };
                 let (floor, rest) = n.div_rem_floor(m)?;
                 take(a.1 + floor);
-                take(a.1 + floor + if rest > T::ZERO { T::ONE } else { T::ZERO });
+                take(a.1 + floor + i128::from(rest > 0));
             }
         }
     }
     let (lo, hi) = ys?;
-    Some((lo.to_i64()?, hi.to_i64()?))
+    Some((i64::try_from(lo).ok()?, i64::try_from(hi).ok()?))
 }
 
 /// A convex piece of a stroke: a polygon (a segment's parallelogram, a
@@ -128,7 +116,7 @@ fn ys_within_in<T: Wide>(a: Pt, d: Pt, xs: (i64, i64)) -> Option<(i64, i64)> {
 /// it, and the half-planes that the row-by-row fallback reads are derived
 /// when it is taken ([`region`](Self::region)). On a Cortex-M4 (`.ci/itrace`'s
 /// zigzag through `draw`) the pieces built with their half-planes took
-/// 1,061,064 instructions, and 993,702 built this way (864,473 after
+/// 1,061,064 instructions, and 993,702 built this way (854,831 after
 /// later changes).
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Piece {
