@@ -174,11 +174,9 @@ const STEPPED_COLUMNS: u32 = 8;
 /// inlined, 12,145 with the divisor's reciprocal by Newton's iteration,
 /// 11,436 with the start values from 32 by 32-bit products, 11,211 with
 /// the pixels' writes zipped with the colours, and 10,894 with
-/// `Frame::new` inlined (no copies of the frame). 11,385 since
-/// 2026-12-06 (eighth session) with this code unchanged: the compiler
-/// keeps fewer of [`at`](Self::at)'s column steps in registers since a
-/// change to the strokes (the window returns to 10,894 with the strokes'
-/// `next_row_near` left out).
+/// `Frame::new` inlined (no copies of the frame). A change elsewhere can
+/// move it: see `stroke::pieces::first_row_near` (11,385 with that code
+/// in another place).
 #[derive(Debug)]
 pub(crate) struct SpanLambdas<'a> {
     frame: &'a Frame,

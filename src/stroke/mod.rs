@@ -456,49 +456,20 @@ impl<'a> Stroke<'a> {
         result
     }
 
-    /// The first row from `from` on whose centres lie within the stroke's
-    /// reach (in `y`) of a segment's part over columns `x0..x1` widened by
-    /// the reach ([`pieces::ys_within`]), or of its lone point: no row
-    /// between `from` and it has a pixel of those columns lit. `None` if
-    /// there is none. `O(n)` for `n` points, with two divisions a
-    /// segment that crosses the band's sides.
+    /// The first row from `from` on that the stroke can light in columns
+    /// `x0..x1` ([`pieces::first_row_near`]): no row between `from` and it
+    /// has a pixel of those columns lit. `None` if there is none. `O(n)`
+    /// for `n` points, with two divisions a segment that crosses the
+    /// band's sides.
     fn next_row_near(
         &self,
         (x0, x1): (i64, i64),
         from: i64,
         ends: Option<(usize, usize)>,
     ) -> Option<i64> {
-        // Columns below 2^32, a reach below 2^30: no overflow.
-        let reach = self.reach();
-        let band = (x0 * 4096 + 2048 - reach, (x1 - 1) * 4096 + 2048 + reach);
-        let mut next: Option<i64> = None;
-        let mut take = |(lo, hi): (i64, i64)| {
-            // The rows whose centres 4096 j + 2048 lie in lo - reach ..=
-            // hi + reach (points below 2^46).
-            let first = -((-(lo - reach - 2048)).div_euclid(4096));
-            let last = (hi + reach - 2048).div_euclid(4096);
-            if last >= from {
-                let start = first.max(from);
-                next = Some(next.map_or(start, |n| n.min(start)));
-            }
-        };
-        match ends {
-            None => {
-                let p = self.outline.at(0);
-                if let Some(ys) = pieces::ys_within(p, (0, 0), band) {
-                    take(ys);
-                }
-            }
-            Some((first, last)) => {
-                for seg in (first..=last).filter_map(|k| self.segment(k)) {
-                    let d = (seg.b.0 - seg.a.0, seg.b.1 - seg.a.1);
-                    if let Some(ys) = pieces::ys_within(seg.a, d, band) {
-                        take(ys);
-                    }
-                }
-            }
-        }
-        next
+        let segment = |k| self.segment(k);
+        let lone = self.outline.at(0);
+        pieces::first_row_near(ends, &segment, lone, (x0, x1), from, self.reach())
     }
 
     /// The first and last segments with length; `None` if there are none.
