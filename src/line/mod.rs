@@ -293,8 +293,8 @@ impl Line {
     /// whole `i32` plane, clipped to the target. A 1-pixel line costs
     /// work proportional to its visible pixels; a thick line whose
     /// corners leave the 20.12 range (`-524288..=524287`, module docs,
-    /// "Thick lines") a division per side on each row of the target it
-    /// crosses. No input overflows.
+    /// "Thick lines") is set up in 128 bits and stepped in 64 on the rows
+    /// where it crosses the target's columns. No input overflows.
     ///
     /// # Examples
     ///

@@ -26,9 +26,8 @@ use crate::{
 /// union is filled under the crate's sampling rule, so every pixel of it
 /// is written exactly once, on the inside of turns and where the polyline
 /// crosses itself too, and there is no gap at any joint. A closed polyline
-/// joins at its first point as well. Exact for any `i32` points (no cut
-/// at the 20.12 range as for a single thick line); [`Join`] has the
-/// details and the cost.
+/// joins at its first point as well. Exact for any `i32` points;
+/// [`Join`] has the details and the cost.
 ///
 /// # Examples
 ///

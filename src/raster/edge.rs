@@ -38,8 +38,10 @@
 //!
 //! The setup divides twice (`q` and the first crossing, see
 //! [`Edge::new`]), in 32 bits when the operands fit (a single hardware
-//! division on a Cortex-M), else in 64; no width beyond 64 bits is ever
-//! divided. The state steps in `T`: with every relative
+//! division on a Cortex-M), else in 64; a triangle's or a polygon's edge
+//! never divides wider. (An edge along a line far past the 20.12 range,
+//! [`Edge::along_line`], and [`threshold_on_row`] divide in 128 bits.)
+//! The state steps in `T`: with every relative
 //! coordinate below `2^29` in magnitude, `x`, `q`, `s`, `dy` and
 //! `x + 4095` all stay below `2^31` (`|q| <= |dx| + 1` once the edge spans
 //! two rows, since then `dy > 4096`), so `i32` is exact; `i64` always is.
@@ -245,9 +247,12 @@ impl Edge<i64> {
     /// [`Edge::new`] is set up in (a stroke's pieces beyond the 20.12
     /// range), whose thresholds [`threshold_on_row`] would otherwise find
     /// with a 128-bit division on every row. `None` if `d.1 = 0`, an
-    /// operand is out of bound, or the crossing on row 0 or on row `last`
-    /// (or the step) reaches `2^62`: the caller then finds each row's
-    /// threshold directly.
+    /// operand is out of bound, `last < 0`, or `|c_0| + last (|q| + 1) +
+    /// 4096` (a bound on every crossing the walk reaches, `c_0` row 0's,
+    /// `q` the step) is `2^62` or more: the caller then finds each row's
+    /// threshold directly. The edge may be stepped once past row `last`
+    /// (a walk steps after each row): that crossing stays below `2^62 +
+    /// 2^62`, within `i64`.
     ///
     /// The crossing of row `k` is `ceil(m_k / dy)` with `m_k = p.0 dy + (4096
     /// k - p.1) dx` (`d` reversed if need be so that `dy > 0`); each product
@@ -545,6 +550,29 @@ mod tests {
         }
         assert!(Edge::along_line((0, 0), shallow, 8).is_none());
         assert!(Edge::along_line((0, 0), (-1 << 47, -1), 8).is_none());
+        // Walks as tall as a tile can be (up to 2^31 - 1 rows), not
+        // stepped through: the bounds hold the reference's thresholds on
+        // the first and the last row.
+        let mut tall = 0;
+        for _ in 0..3000 {
+            let p = (next(44), next(44));
+            let dy_bits = 1 + next(7).unsigned_abs() as u32 % 44;
+            let d = (next(44), next(dy_bits));
+            let last = next(32).unsigned_abs().min(i32::MAX as u64) as i32;
+            if d.1 == 0 {
+                continue;
+            }
+            if let Some(edge) = Edge::along_line(p, d, last) {
+                let (least, most) = edge.threshold_bounds();
+                for k in [0, i64::from(last)] {
+                    let want = reference(p, d, k).0;
+                    let within = (i128::from(least)..=i128::from(most)).contains(&want);
+                    assert!(within, "{p:?} {d:?} row {k} of {last}");
+                }
+                tall += 1;
+            }
+        }
+        assert!(tall > 300, "{tall}");
     }
 
     /// Random values of `bits` bits, signed (`-2^(bits-1)..2^(bits-1)`),

@@ -163,8 +163,8 @@ use row::{Mask, RowWalk, Tile, MASK_BITS, MASK_WORDS};
 ///
 /// Any `i32` points, any [`Vertex`]es, any width (over 65535 px drawn as
 /// 65535), any clip: coordinates are raw units below `2^46`, with
-/// products taken in `i128`, so nothing overflows and, unlike a single
-/// thick line, nothing is cut at the edges of the 20.12 range.
+/// products taken in `i128`, so nothing overflows and nothing is cut at
+/// the edges of the 20.12 range.
 ///
 /// # Examples
 ///
@@ -389,7 +389,7 @@ impl<'a> Stroke<'a> {
                     // Nothing here: on to the next rows the stroke
                     // reaches in these columns (a stroke with points far
                     // off a tall target crosses it in a few rows).
-                    false => match self.next_row_near((x0, x1), y1, ends) {
+                    false => match self.next_row_near((x0, x1), y1, ends, &mut offsets) {
                         Some(next) => next,
                         None => break,
                     },
@@ -459,17 +459,43 @@ impl<'a> Stroke<'a> {
     /// The first row from `from` on that the stroke can light in columns
     /// `x0..x1` ([`pieces::first_row_near`]): no row between `from` and it
     /// has a pixel of those columns lit. `None` if there is none. `O(n)`
-    /// for `n` points, with two divisions a segment that crosses the
-    /// band's sides.
+    /// for `n` points: each segment's parallelogram (its offsets kept in
+    /// `offsets`), with two divisions for each of its sides that crosses
+    /// a side of the band.
     fn next_row_near(
         &self,
         (x0, x1): (i64, i64),
         from: i64,
         ends: Option<(usize, usize)>,
+        offsets: &mut Offsets,
     ) -> Option<i64> {
         let segment = |k| self.segment(k);
+        let mut corners = |k, seg: &Segment| {
+            let ends = ends.unwrap_or((k, k));
+            self.segment_corners(k, seg, ends, offsets)
+        };
         let lone = self.outline.at(0);
-        pieces::first_row_near(ends, &segment, lone, (x0, x1), from, self.reach())
+        let reaches = (self.side(), self.reach());
+        pieces::first_row_near(ends, &segment, &mut corners, lone, (x0, x1), from, reaches)
+    }
+
+    /// The corners of segment `k`'s parallelogram (`seg`), of a stroke
+    /// whose first and last segments with length are `ends`: the ends of
+    /// an open stroke reach half a pixel further (butt caps).
+    #[inline(always)]
+    fn segment_corners(
+        &self,
+        k: usize,
+        seg: &Segment,
+        (first, last): (usize, usize),
+        offsets: &mut Offsets,
+    ) -> [Pt; 4] {
+        let n = offsets.get(k, seg, self.width);
+        let extend = |end: usize| match !self.closed && k == end {
+            true => seg.extension(),
+            false => (0, 0),
+        };
+        seg.corners(n, extend(first), extend(last))
     }
 
     /// The first and last segments with length; `None` if there are none.
@@ -478,6 +504,13 @@ impl<'a> Stroke<'a> {
         let first = (0..count).find(|&k| self.segment(k).is_some())?;
         let last = (0..count).rev().find(|&k| self.segment(k).is_some())?;
         Some((first, last))
+    }
+
+    /// How far (raw units, on each axis) a segment's parallelogram
+    /// reaches from the segment: `|n| + |e| <= w / 2 + 1/2` px, rounding
+    /// included.
+    fn side(&self) -> i64 {
+        2048 * self.width + 4096
     }
 
     /// How far (raw units) any piece reaches from the points: a miter tip
@@ -522,24 +555,14 @@ impl<'a> Stroke<'a> {
             }
             return;
         };
-        let open = !self.closed;
-        let side = 2048 * w + 4096;
+        let side = self.side();
         let mut prev: Option<(usize, Segment)> = None;
         for k in first..=last {
             let Some(seg) = self.segment(k) else {
                 continue;
             };
             if window.near(seg.a, seg.b, side) {
-                let n = offsets.get(k, &seg, w);
-                let extend = |end: usize| {
-                    if open && k == end {
-                        seg.extension()
-                    } else {
-                        (0, 0)
-                    }
-                };
-                let (start, end) = (extend(first), extend(last));
-                seg.piece(n, start, end, f);
+                Piece::polygon(&self.segment_corners(k, &seg, (first, last), offsets), f);
             }
             if let Some((k0, s0)) = &prev {
                 self.join_at(window, (*k0, s0), (k, &seg), offsets, f);

@@ -108,14 +108,22 @@ pub(crate) fn ys_within(a: Pt, d: Pt, xs: (i64, i64)) -> Option<(i64, i64)> {
     Some((i64::try_from(lo).ok()?, i64::try_from(hi).ok()?))
 }
 
-/// The first row from `from` on whose centres lie within `reach` (raw,
-/// in `y`) of a segment's part over the columns `x0..x1` widened by the
-/// reach ([`ys_within`]), for the segments `segment(k)` of `k` from
-/// `ends.0` to `ends.1` that have length, or, with no `ends`, of the
-/// `lone` point: no row between `from` and it has a
-/// pixel of those columns lit by a stroke of that reach through them.
-/// `None` if there is none. Columns below `2^32`, points below `2^46`, a
-/// reach below `2^30`: no overflow.
+/// The first row from `from` on where a stroke can light a pixel of the
+/// columns `x0..x1`: where the parallelogram of a segment
+/// (`segment(k)` for `k` from `ends.0` to `ends.1`, the segments with
+/// length; its corners `corners(k, segment)`) crosses them
+/// ([`convex_ys_within`]), or within `reach` (raw, in `y`) of a
+/// segment's end, where its joins lie, when that end lies within `reach`
+/// of them; with no `ends`, within `reach` of the `lone` point. No row
+/// between `from` and it has a pixel of those columns lit. `None` if
+/// there is none. Columns below `2^32`, points below `2^46`, reaches
+/// below `2^30`: no overflow.
+///
+/// A segment's parallelogram lies within `side` of it on each axis: its
+/// corners are set up only for a segment whose own part within `side` of
+/// the columns could come before the row found so far. So a tile below
+/// the stroke costs a few divisions a segment, and a segment running
+/// alongside the columns without lighting them is skipped at once.
 ///
 /// Out of line: a masked stroke calls it only after a tile with nothing
 /// lit. Written here rather than in `Stroke`, the Cortex-M4 build of the
@@ -126,35 +134,58 @@ pub(crate) fn ys_within(a: Pt, d: Pt, xs: (i64, i64)) -> Option<(i64, i64)> {
 pub(crate) fn first_row_near(
     ends: Option<(usize, usize)>,
     segment: &dyn Fn(usize) -> Option<Segment>,
+    corners: &mut dyn FnMut(usize, &Segment) -> [Pt; 4],
     lone: Pt,
     (x0, x1): (i64, i64),
     from: i64,
-    reach: i64,
+    (side, reach): (i64, i64),
 ) -> Option<i64> {
-    let band = (x0 * 4096 + 2048 - reach, (x1 - 1) * 4096 + 2048 + reach);
-    let mut next: Option<i64> = None;
-    let mut take = |ys: Option<(i64, i64)>| {
-        // The rows whose centres 4096 j + 2048 lie in lo - reach ..= hi +
-        // reach, from `from` on.
-        let Some((lo, hi)) = ys else {
-            return;
-        };
-        let first = -((-(lo - reach - 2048)).div_euclid(4096));
-        let last = (hi + reach - 2048).div_euclid(4096);
-        if last >= from {
-            let start = first.max(from);
-            next = Some(next.map_or(start, |n| n.min(start)));
-        }
+    let centres = (x0 * 4096 + 2048, (x1 - 1) * 4096 + 2048);
+    let near = |r: i64| (centres.0 - r, centres.1 + r);
+    // The first row from `from` on whose centre 4096 j + 2048 lies in lo
+    // - margin ..= hi + margin, if any.
+    let first_row = |ys: Option<(i64, i64)>, margin: i64| {
+        let (lo, hi) = ys?;
+        let first = -((-(lo - margin - 2048)).div_euclid(4096));
+        let last = (hi + margin - 2048).div_euclid(4096);
+        (last >= from).then_some(first.max(from))
     };
-    match ends {
-        Some((first, last)) => {
-            for seg in (first..=last).filter_map(segment) {
-                take(ys_within(seg.a, sub(seg.b, seg.a), band));
-            }
+    let Some((first, last)) = ends else {
+        return first_row(ys_within(lone, (0, 0), near(reach)), reach);
+    };
+    // The earlier of two rows, if any.
+    let earlier = |a: Option<i64>, b: Option<i64>| match (a, b) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
+    };
+    let mut next: Option<i64> = None;
+    for k in first..=last {
+        let Some(seg) = segment(k) else {
+            continue;
+        };
+        for end in [seg.a, seg.b] {
+            next = earlier(next, first_row(ys_within(end, (0, 0), near(reach)), reach));
         }
-        None => take(ys_within(lone, (0, 0), band)),
+        let coarse = first_row(ys_within(seg.a, sub(seg.b, seg.a), near(side)), side);
+        if coarse.is_some_and(|row| next.is_none_or(|n| row < n)) {
+            let exact = first_row(convex_ys_within(&corners(k, &seg), centres), 0);
+            next = earlier(next, exact);
+        }
     }
     next
+}
+
+/// The lowest and highest `y` (raw) of the convex polygon `corners` (in
+/// order round it, below `2^46`) where its `x` lies in `xs`: its corners
+/// lie on its sides' parts in the band ([`ys_within`]). `None` if it has
+/// no such point.
+fn convex_ys_within(corners: &[Pt; 4], xs: (i64, i64)) -> Option<(i64, i64)> {
+    (0..4)
+        .filter_map(|i| {
+            let (a, b) = (corners[i], corners[(i + 1) % 4]);
+            ys_within(a, sub(b, a), xs)
+        })
+        .reduce(|(lo, hi), (l, h)| (lo.min(l), hi.max(h)))
 }
 
 /// A convex piece of a stroke: a polygon (a segment's parallelogram, a
@@ -407,12 +438,13 @@ impl Segment {
         }
     }
 
-    /// The segment's parallelogram with offset `n`, its start moved back
-    /// by `start` and its end forward by `end` (each `e` or zero).
+    /// The corners of the segment's parallelogram with offset `n`, its
+    /// start moved back by `start` and its end forward by `end` (each `e`
+    /// or zero), in order round it.
     #[inline(always)]
-    pub fn piece(&self, n: Pt, start: Pt, end: Pt, f: &mut dyn FnMut(&Piece)) {
+    pub fn corners(&self, n: Pt, start: Pt, end: Pt) -> [Pt; 4] {
         let (a, b) = (sub(self.a, start), add(self.b, end));
-        Piece::polygon(&[add(a, n), add(b, n), sub(b, n), sub(a, n)], f);
+        [add(a, n), add(b, n), sub(b, n), sub(a, n)]
     }
 }
 
