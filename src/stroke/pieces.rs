@@ -196,7 +196,7 @@ fn convex_ys_within(corners: &[Pt; 4], xs: (i64, i64)) -> Option<(i64, i64)> {
 /// it, and the half-planes that the row-by-row fallback reads are derived
 /// when it is taken ([`region`](Self::region)). On a Cortex-M4 (`.ci/itrace`'s
 /// zigzag through `draw`) the pieces built with their half-planes took
-/// 1,061,064 instructions, and 993,702 built this way (855,202 after
+/// 1,061,064 instructions, and 993,702 built this way (862,754 after
 /// later changes).
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Piece {
