@@ -29,7 +29,7 @@
 
 use embedded_graphics_core::geometry::Point;
 
-use crate::{raster::wide::div_sqrt, vertex::Vertex};
+use crate::{stroke::pieces::Segment, vertex::Vertex};
 
 /// Widths above this are drawn as this width.
 pub(crate) const MAX_WIDTH: u32 = 65535;
@@ -37,45 +37,28 @@ pub(crate) const MAX_WIDTH: u32 = 65535;
 /// The corners of the thick line, in order round it (a parallelogram:
 /// `c[0] + c[2] = c[1] + c[3]`): as vertices, or, if one lies outside the
 /// 20.12 range, in raw units (below `2^44` in magnitude).
+///
+/// The offsets are a stroke segment's ([`Segment::offsets`]), so a
+/// thick line and a two-point stroke of the same width have the same
+/// corners.
 pub(crate) fn corners(
     start: Point,
     end: Point,
     width: u32,
 ) -> Result<[Vertex; 4], [(i64, i64); 4]> {
-    // In i64: centres within 2^43 raw units, offsets within 2^27, every
-    // difference of two `i32` points within 2^32.
+    // In i64: centres within 2^43 raw units, offsets within 2^27.
     let w = i64::from(width.min(MAX_WIDTH));
     let centre = |p: Point| (i64::from(p.x) * 4096 + 2048, i64::from(p.y) * 4096 + 2048);
-    // In pixels: the ratios below do not depend on the unit.
-    let (dx, dy) = (
-        i64::from(end.x) - i64::from(start.x),
-        i64::from(end.y) - i64::from(start.y),
-    );
-    let (e, n) = if dx == 0 && dy == 0 {
+    let segment = Segment {
+        a: centre(start),
+        b: centre(end),
+    };
+    let (e, n) = if segment.a == segment.b {
         ((w * 2048, 0), (0, w * 2048))
     } else {
-        // |dx|, |dy| <= 2^32 - 1: each square fits u64, their sum u128.
-        let (ax, ay) = (dx.unsigned_abs(), dy.unsigned_abs());
-        let len2 = u128::from(ax * ax) + u128::from(ay * ay);
-        // round(|d| f / len), with the sign of d; |d| f < 2^32 2^27 = 2^59,
-        // and so is the result.
-        let scaled = |d: i64, f: i64| {
-            let a = u128::from(d.unsigned_abs() * f.unsigned_abs());
-            d.signum() * i64::try_from(div_sqrt(a, len2)).unwrap_or_default()
-        };
-        // e = (dx, dy) * 2048 / len and n = (-dy, dx) * w * 2048 / len, raw.
-        (
-            (scaled(dx, 2048), scaled(dy, 2048)),
-            (-scaled(dy, 2048 * w), scaled(dx, 2048 * w)),
-        )
+        segment.offsets(w)
     };
-    let (p0, p1) = (centre(start), centre(end));
-    let corners = [
-        (p0.0 - e.0 + n.0, p0.1 - e.1 + n.1),
-        (p1.0 + e.0 + n.0, p1.1 + e.1 + n.1),
-        (p1.0 + e.0 - n.0, p1.1 + e.1 - n.1),
-        (p0.0 - e.0 - n.0, p0.1 - e.1 - n.1),
-    ];
+    let corners = segment.corners(n, e, e);
     let vertex = |(x, y): (i64, i64)| {
         Some(Vertex::from_raw(
             i32::try_from(x).ok()?,
