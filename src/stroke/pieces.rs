@@ -36,7 +36,7 @@
 
 use super::{Join, MITER_LIMIT};
 use crate::{
-    raster::wide::{div_sqrt, product_u64, round_div, Wide},
+    raster::wide::{div_sqrt, round_div, Wide},
     vertex::Vertex,
 };
 
@@ -201,7 +201,7 @@ fn sides_ys_within(sides: impl Iterator<Item = (Pt, Pt)>, xs: (i64, i64)) -> Opt
 /// it, and the half-planes that the row-by-row fallback reads are derived
 /// when it is taken ([`region`](Self::region)). On a Cortex-M4 (`.ci/itrace`'s
 /// zigzag through `draw`) the pieces built with their half-planes took
-/// 1,061,064 instructions, and 993,702 built this way (862,754 after
+/// 1,061,064 instructions, and 993,702 built this way (856,843 after
 /// later changes).
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Piece {
@@ -396,7 +396,10 @@ impl Piece {
     }
 }
 
-/// A segment `a -> b` (raw units, `a != b`) of a stroke `w` px wide.
+/// A segment `a -> b` (raw units, `a != b`) of a stroke `w` px wide or of
+/// a thick line: its ends are the centres of `i32` pixels or [`Vertex`]
+/// coordinates, so that its direction, reduced, lies below `2^32`
+/// ([`offsets`](Self::offsets)).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Segment {
     pub a: Pt,
@@ -418,6 +421,7 @@ impl Segment {
 
     /// The offsets `e` and `n` for width `w <= 65535`, with one setup of
     /// the direction's length.
+    #[inline]
     pub fn offsets(&self, w: i64) -> (Pt, Pt) {
         let scaled = self.scaler();
         (
@@ -433,20 +437,20 @@ impl Segment {
     /// power of two dividing both components: a direction between pixel
     /// centres (a multiple of 4096) becomes one between `i32` pixels,
     /// below `2^32` a component, as is any difference of `Vertex`
-    /// coordinates. Then `|d| f < 2^32 * 2048 * 65535 < 2^59`, and the
-    /// result is at most `f` in magnitude. The products are taken by
-    /// [`product_u64`]: on a 32-bit core four 32-bit products rather than
-    /// a library call (`.ci/itrace`'s mitred zigzag 398,864 → 396,657
-    /// instructions through `draw_spans`).
+    /// coordinates. Then the squares lie below `2^64`, `|d| f < 2^32 *
+    /// 2048 * 65535 < 2^59`, and the result is at most `f` in magnitude:
+    /// the products are taken in `u64`, not `u128` (on a Cortex-M4,
+    /// `.ci/itrace`'s mitred zigzag 398,864 → 395,805 instructions through
+    /// `draw_spans`).
     fn scaler(&self) -> impl Fn(usize, i64) -> i64 {
         let d = sub(self.b, self.a);
         let shift = (d.0 | d.1).trailing_zeros().min(63);
         let d = [d.0 >> shift, d.1 >> shift];
-        let square = |c: i64| product_u64(c.unsigned_abs(), c.unsigned_abs());
+        let square = |c: i64| u128::from(c.unsigned_abs() * c.unsigned_abs());
         let len2 = square(d[0]) + square(d[1]);
         move |i, f| {
             let c = d[i & 1];
-            let scaled = div_sqrt(product_u64(c.unsigned_abs(), f.unsigned_abs()), len2);
+            let scaled = div_sqrt(u128::from(c.unsigned_abs() * f.unsigned_abs()), len2);
             // At most |f|: it fits.
             let scaled = i64::try_from(scaled).unwrap_or_default();
             if c < 0 {

@@ -47,7 +47,7 @@ fn ceil_div(n: i64, d: i64) -> Option<i64> {
 /// rows) took 581,494 instructions with each row's four thresholds
 /// divided in 128 bits on all 240 rows, 133,808 with them stepped,
 /// 76,868 with the two ends' sides, which bound no row inside the
-/// screen, left out, and takes 46,478 with only the rows where the piece
+/// screen, left out, and takes 46,514 with only the rows where the piece
 /// crosses the screen's columns walked ([`Region::ys_within`]).
 pub(crate) struct RowWalk {
     /// The sides that can bound a row inside the tile, `count` of them.
