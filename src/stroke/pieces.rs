@@ -493,9 +493,9 @@ pub(crate) fn square(p: Pt, w: i64, f: &mut dyn FnMut(&Piece)) {
 ///   `cos(turn) >= 2 / L^2 - 1` for `L =` [`MITER_LIMIT`] (tested on the
 ///   offsets: `L^2 n0.n1 >= (2 - L^2) r^2`, `r = w / 2`), else the bevel
 ///   alone. `M = P + s (n0 + n1) r^2 / (r^2 + n0.n1)`, the offset lines'
-///   crossing for exact offsets, rounded to a raw unit. Two triangles
-///   rather than one quadrilateral: the tip's rounding can never dent the
-///   bevel.
+///   crossing for exact offsets, each component rounded to the nearest
+///   raw unit, halves up (towards `+inf`). Two triangles rather than one
+///   quadrilateral: the tip's rounding can never dent the bevel.
 /// - Round: the disk of radius `r` around `P`, exactly, cut to the cone
 ///   between the rays `s n0` and `s n1` (after a full reversal, to the
 ///   half-plane ahead of the first segment).

@@ -203,9 +203,14 @@ impl RowWalk {
 /// of centre `c` and squared radius `r2` (`r2 < 2^55`).
 ///
 /// With `u = cx - c.x` and `D = r2 - (py - c.y)^2`, a centre is inside iff
-/// `u^2 < D`, or `u^2 = D` and the nudge moves it inwards: the derivative
-/// of `|p' - c|^2` along `(e, e^2)` is `2 u e + (1 + 2 (py - c.y)) e^2`, so
-/// inwards iff `u < 0`, or `u = 0` and `py < c.y`.
+/// `u^2 < D`, or `u^2 = D` and the nudge moves it inwards. The nudge is
+/// `(e, e^2)` in pixels: with `u` and `v = py - c.y` in pixels too,
+/// `|p' - c|^2` grows by `2 u e + (1 + 2 v) e^2 + e^4`, so inwards iff `u
+/// < 0`, or `u = 0` and `v < -1/2` px (raw: `py - c.y < -2048`). At `v =
+/// -1/2` exactly, the top of the disk of a stroke 1 px wide, the `e^4`
+/// term leaves it outside. (Until 2026-12-06 that point was taken as
+/// inside, the `e^2` term read in raw units: `tests/stroke_exact.rs`,
+/// `width_one_round_join_top`.)
 fn disk_interval(c: (i64, i64), r2: i64, py: i64) -> Option<(i64, i64)> {
     let dy = py - c.1;
     // Past i64, dy^2 is beyond any r2.
@@ -218,7 +223,7 @@ fn disk_interval(c: (i64, i64), r2: i64, py: i64) -> Option<(i64, i64)> {
         (-s, s)
     } else if s > 0 {
         (-s, s - 1)
-    } else if dy < 0 {
+    } else if dy < -HALF {
         (0, 0)
     } else {
         return None;
