@@ -568,13 +568,8 @@ fn random_polylines_near_the_screen() {
         } else {
             Point::zero()
         };
-        check_polyline(
-            &points,
-            width(&mut rng),
-            JOINS[case % 3],
-            origin,
-            &mut tally,
-        );
+        let w = width(&mut rng);
+        check_polyline(&points, w, JOINS[case % 3], origin, &mut tally);
     }
     eprintln!("{tally:?}");
     assert!(
@@ -665,13 +660,8 @@ fn far_points() {
                 window_at((on.0.div_euclid(4096), on.1.div_euclid(4096)), &mut rng)
             }
         };
-        check_polyline(
-            &points,
-            width(&mut rng),
-            JOINS[case % 3],
-            origin,
-            &mut tally,
-        );
+        let w = width(&mut rng);
+        check_polyline(&points, w, JOINS[case % 3], origin, &mut tally);
     }
     eprintln!("{tally:?}");
     assert!(tally.far_lit > 100_000, "{tally:?}");
