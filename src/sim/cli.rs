@@ -309,9 +309,27 @@ fn parse_args(mut args: impl Iterator<Item = OsString>) -> Result<Option<Options
     }))
 }
 
+/// A path as part of a one-line message: its control characters (a line
+/// break is legal in a Unix file name) escaped as in a Rust string, and
+/// what is not UTF-8 replaced by U+FFFD.
+pub(crate) struct OneLine<'a>(pub &'a Path);
+
+impl core::fmt::Display for OneLine<'_> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        use core::fmt::Write as _;
+        for c in self.0.to_string_lossy().chars() {
+            match c.is_control() {
+                true => write!(f, "{}", c.escape_default())?,
+                false => f.write_char(c)?,
+            }
+        }
+        Ok(())
+    }
+}
+
 /// Everything after the command line; the error is the one stderr line.
 fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> {
-    let scene_path = options.scene.display();
+    let scene_path = OneLine(&options.scene);
     let (output_target, counts_target) = output_targets(options)?;
     let bytes =
         std::fs::read(&options.scene).map_err(|e| format!("{scene_path}: cannot read: {e}"))?;
@@ -348,7 +366,7 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> 
     rendered
         .display
         .write_png(&mut png)
-        .map_err(|e| format!("{}: cannot encode PNG: {e}", options.output.display()))?;
+        .map_err(|e| format!("{}: cannot encode PNG: {e}", OneLine(&options.output)))?;
     let mut files = vec![Output {
         path: &options.output,
         option: "-o",
@@ -360,7 +378,7 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> 
         rendered
             .display
             .write_counts_pgm(&mut pgm)
-            .map_err(|e| format!("{}: cannot encode PGM: {e}", path.display()))?;
+            .map_err(|e| format!("{}: cannot encode PGM: {e}", OneLine(path)))?;
         files.push(Output {
             path,
             option: "--counts",
@@ -384,7 +402,7 @@ fn render(options: &Options, stdout: &mut impl Write) -> Result<String, String> 
     let stats = rendered.stats;
     Ok(format!(
         "wrote {}: {}x{}, {} primitives, {} pixels written, rasterized in {:.3} ms",
-        options.output.display(),
+        OneLine(&options.output),
         size.width,
         size.height,
         stats.primitives,
@@ -415,14 +433,14 @@ fn output_targets(options: &Options) -> Result<(PathBuf, Option<PathBuf>), Strin
         if target.is_some() && target.cloned() == scene {
             return Err(format!(
                 "{}: `{name}` names the scene file; refusing to overwrite it",
-                path.display()
+                OneLine(path)
             ));
         }
     }
     match (&options.counts, &counts) {
         (Some(path), Some(c)) if *c == output => Err(format!(
             "{}: `-o` and `--counts` name the same file",
-            path.display()
+            OneLine(path)
         )),
         _ => Ok((output, counts)),
     }
@@ -439,7 +457,7 @@ fn output_target(path: &Path, name: &str) -> Result<PathBuf, String> {
         if !names_a_file(&target) {
             return Err(format!(
                 "{}: `{name}` must name a file, not end in `/`, `.` or `..`",
-                path.display()
+                OneLine(path)
             ));
         }
         let meta = match std::fs::symlink_metadata(&target) {
@@ -448,11 +466,11 @@ fn output_target(path: &Path, name: &str) -> Result<PathBuf, String> {
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
                 return Ok(resolve(&target).unwrap_or(target))
             }
-            Err(e) => return Err(format!("{}: cannot write: {e}", path.display())),
+            Err(e) => return Err(format!("{}: cannot write: {e}", OneLine(path))),
         };
         if meta.file_type().is_symlink() {
             let link = std::fs::read_link(&target)
-                .map_err(|e| format!("{}: cannot read the link: {e}", path.display()))?;
+                .map_err(|e| format!("{}: cannot read the link: {e}", OneLine(path)))?;
             target = match target.parent() {
                 Some(dir) => dir.join(link),
                 None => link,
@@ -462,14 +480,14 @@ fn output_target(path: &Path, name: &str) -> Result<PathBuf, String> {
         if !meta.is_file() {
             return Err(format!(
                 "{}: `{name}` names something other than a regular file; refusing to replace it",
-                path.display()
+                OneLine(path)
             ));
         }
         return Ok(resolve(&target).unwrap_or(target));
     }
     Err(format!(
         "{}: too many levels of symbolic links",
-        path.display()
+        OneLine(path)
     ))
 }
 
@@ -528,7 +546,7 @@ fn write_all_or_nothing(files: &[Output<'_>]) -> Result<(), String> {
             Ok(temp) => temps.push(temp),
             Err(e) => {
                 cleanup(&temps);
-                return Err(format!("{}: cannot write: {e}", file.path.display()));
+                return Err(format!("{}: cannot write: {e}", OneLine(file.path)));
             }
         }
     }
@@ -537,7 +555,7 @@ fn write_all_or_nothing(files: &[Output<'_>]) -> Result<(), String> {
             Ok(target) if target == file.target => {}
             Ok(_) => {
                 cleanup(&temps);
-                return Err(format!("{}: changed while rendering", file.path.display()));
+                return Err(format!("{}: changed while rendering", OneLine(file.path)));
             }
             Err(e) => {
                 cleanup(&temps);
@@ -553,7 +571,7 @@ fn write_all_or_nothing(files: &[Output<'_>]) -> Result<(), String> {
                 let _ = std::fs::remove_file(done.target);
             }
             cleanup(&temps[i..]);
-            return Err(format!("{}: cannot write: {e}", file.path.display()));
+            return Err(format!("{}: cannot write: {e}", OneLine(file.path)));
         }
     }
     Ok(())

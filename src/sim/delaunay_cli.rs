@@ -28,7 +28,7 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::prelude::rust_2021::*;
 
-use super::cli::run_parsed;
+use super::cli::{run_parsed, OneLine};
 #[cfg(doc)]
 use super::cli::{EXIT_FAILURE, EXIT_OK, EXIT_USAGE};
 use super::scene::vertex;
@@ -163,7 +163,7 @@ fn parse_size(text: &str) -> Option<(u32, u32)> {
 
 /// Everything after the command line; the error is the one stderr line.
 fn triangulate_file(options: &Options) -> Result<String, String> {
-    let path = options.points.display();
+    let path = OneLine(&options.points);
     let text = std::fs::read(&options.points).map_err(|e| format!("{path}: cannot read: {e}"))?;
     let text = String::from_utf8(text).map_err(|_| format!("{path}: not valid UTF-8"))?;
     let points = parse_points(&text).map_err(|e| format!("{path}:{}: {e}", e.line))?;
@@ -173,10 +173,10 @@ fn triangulate_file(options: &Options) -> Result<String, String> {
         .map_err(|e| format!("{path}: {e}"))?;
     let scene = scene_text(&points, mesh.indices(), options.size, options.gouraud);
     std::fs::write(&options.output, scene)
-        .map_err(|e| format!("{}: cannot write: {e}", options.output.display()))?;
+        .map_err(|e| format!("{}: cannot write: {e}", OneLine(&options.output)))?;
     Ok(format!(
         "wrote {}: {} points, {} triangles",
-        options.output.display(),
+        OneLine(&options.output),
         points.len(),
         mesh.indices().count()
     ))

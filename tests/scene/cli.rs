@@ -233,6 +233,23 @@ fn cli_io_errors_are_one_line() {
     assert!(err.contains("cannot write"), "{err}");
 }
 
+/// A scene path holding a line break (legal on Unix) is shown escaped,
+/// so that bad input still gives one line (`scene-format.md`); until
+/// 2026-12-06 it was printed raw, over two lines (found by a black-box
+/// audit of `render` against that contract).
+#[cfg(unix)]
+#[test]
+fn cli_error_line_escapes_the_path() {
+    let scene = Temp::with("two\nlines.scene", "size 4 4\nfoo\n");
+    let png_file = Temp::new("two-lines.png");
+    let (code, out, err) = run(&[&scene.arg(), "-o", &png_file.arg()]);
+    assert_eq!((code, out.as_str()), (1, ""));
+    assert_eq!(err.matches('\n').count(), 1, "{err:?}");
+    let shown = scene.arg().replace('\n', "\\n");
+    assert_eq!(err, format!("{shown}:2: unknown command `foo`\n"));
+    assert!(!png_file.0.exists());
+}
+
 #[test]
 fn cli_usage() {
     let (code, out, err) = run(&["--help"]);
