@@ -470,7 +470,7 @@ fn quotient_digit(high: u64, low: u64, d: u64, reciprocal: u64) -> (u64, u64) {
 /// `a b` in full: on a 32-bit target, which multiplies `u128`s through a
 /// library call, [`product_by_halves`].
 #[inline(always)]
-pub(crate) fn product_u64(a: u64, b: u64) -> u128 {
+fn product_u64(a: u64, b: u64) -> u128 {
     match cfg!(target_pointer_width = "32") {
         true => product_by_halves(a, b),
         false => u128::from(a) * u128::from(b),
