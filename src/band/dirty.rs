@@ -14,6 +14,12 @@ use crate::{clip::Bounds, line::LinePixels, raster::sink::SpanSink, span::Span};
 /// since the last flush (one range per row, from the leftmost to the
 /// rightmost pixel written), and sends only those to the display.
 ///
+/// What is recorded is each write's area on the target, whatever `T`
+/// does with it: nothing written is ever left out, and where `T` writes
+/// less (a `fill_contiguous` whose colours run out, a span that a
+/// [`Framebuffer`](crate::Framebuffer) drops because it is not wholly
+/// inside one row), the record is a superset, which a flush sends whole.
+///
 /// Every write goes through to `T`; the record costs two compares per
 /// span and `8 H` bytes. [`flush`](Self::flush) sends the changed region
 /// as rectangles, each a run of consecutive changed rows whose column

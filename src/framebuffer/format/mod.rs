@@ -182,13 +182,16 @@ pub trait PixelFormat {
     }
 
     /// Sets the pixels of a 1-pixel line in `buffer`, whose rows are
-    /// `stride` bytes apart; pixels outside `buffer` (negative, or past its
-    /// end at any `stride`) are ignored, without overflow. Clip the line to
-    /// the rows' width first (as the [`Framebuffer`](super::Framebuffer)
-    /// does): a pixel past its row's end is ignored by the provided
-    /// implementation and the packed formats, but lands in the next row
-    /// (and one at a negative `x` at the end of the row before) with the
-    /// byte formats, which walk the buffer by offset.
+    /// `stride` bytes apart; pixels outside `buffer` (at a negative offset,
+    /// or past its end at any `stride`) are ignored, without overflow.
+    /// Clip the line to the rows' width first (as the
+    /// [`Framebuffer`](super::Framebuffer) does): a pixel past its row's
+    /// end is ignored by the provided implementation and the packed
+    /// formats, but lands in the next row (and one at a negative `x` at the
+    /// end of the row before) with the byte formats, which walk the buffer
+    /// by offset when `stride` is a whole number of pixels (at other
+    /// strides they set the pixels one by one, as the provided
+    /// implementation does, and ignore it).
     ///
     /// The provided implementation calls [`write_pixel`](Self::write_pixel)
     /// per pixel; the built-in byte formats walk the line through the
