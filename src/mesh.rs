@@ -300,7 +300,8 @@ impl Camera {
     /// position is outside the 20.12 range.
     ///
     /// Every field and point may be any `i32`: the position is computed in
-    /// `i128` (`|focal 4096 x| < 2^75`) and checked into `i32`; the depth
+    /// `i128` (`|focal 4096 x| < 2^75`, rounded halves up) and checked
+    /// into `i32` as a whole, centre and offset together; the depth
     /// likewise (`|65534 far (z - near)| < 2^80`). Depth is 0 unless
     /// `0 < near < far`.
     ///
@@ -322,16 +323,12 @@ impl Camera {
         }
         let z = i128::from(p.z);
         let scale = i128::from(self.focal) * 4096;
-        let div = |n: i128| {
-            let q = (2 * n + z).div_euclid(2 * z);
-            i32::try_from(q).ok()
-        };
-        let x = div(scale * i128::from(p.x))?.checked_add(self.centre.0.checked_mul(4096)?)?;
-        let y = self
-            .centre
-            .1
-            .checked_mul(4096)?
-            .checked_sub(div(scale * i128::from(p.y))?)?;
+        // focal 4096 p / z, rounded (halves up), from the centre: the sum
+        // in `i128` (below 2^76), so that only the position must fit.
+        let offset = |n: i32| (2 * scale * i128::from(n) + z).div_euclid(2 * z);
+        let centre = |c: i32| i128::from(c) * 4096;
+        let x = i32::try_from(centre(self.centre.0) + offset(p.x)).ok()?;
+        let y = i32::try_from(centre(self.centre.1) - offset(p.y)).ok()?;
         let (near, far) = (i128::from(self.near), i128::from(self.far));
         let depth = if far > near && near > 0 {
             (65534 * far * (z - near) / (z * (far - near))).clamp(0, 65534)

@@ -493,7 +493,8 @@ impl RunSource for Exact {
 ///
 /// On a `DrawTarget` it is one
 /// [`fill_solid`](embedded_graphics_core::draw_target::DrawTarget::fill_solid)
-/// per [`Run`]; through a [`SpanSink`] the sink gets the whole line.
+/// per [`Run`]; through a [`SpanSink`] the sink gets the whole line (but
+/// for column `i32::MAX` with the provided methods: see [`SpanSink`]).
 /// [`stroke_width`](Self::stroke_width) makes a [`ThickLine`] and
 /// [`algorithm`](Self::algorithm) a [`StyledLineVariant`]: separate types,
 /// so that firmware drawing only exact 1-pixel lines links neither the

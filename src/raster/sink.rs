@@ -30,6 +30,12 @@ use crate::{
 ///
 /// Ranges: coordinates are any `i32` and lengths any `u32`; the provided
 /// methods clip columns and rectangles to the bounds and never overflow.
+/// A span's end is exclusive and an `i32`, so no span holds column
+/// `i32::MAX`: the provided [`fill_column`](Self::fill_column),
+/// [`fill_rect`](Self::fill_rect) and [`fill_line`](Self::fill_line)
+/// leave it out, and a sink whose bounds reach it gets nothing there
+/// unless it implements them itself (a `DrawTarget` drawn through `draw`
+/// gets those pixels).
 /// The crate's implementations, given pixels outside their bounds, write
 /// none of them and change no other pixel: a
 /// [`Framebuffer`](crate::Framebuffer) drops a span that is not wholly
