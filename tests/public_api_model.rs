@@ -205,38 +205,28 @@ fn bgr565_from(v: u16) -> Bgr565 {
     Bgr565::new((v & 31) as u8, ((v >> 5) & 63) as u8, (v >> 11) as u8)
 }
 
-byte_spec!(
-    Rgb565Le,
-    Rgb565,
-    2,
-    |c| rgb565_raw(c).to_le_bytes(),
-    |b| rgb565_from(u16::from_le_bytes(b)),
-    |r: &mut Rng| rgb565_from(rand_raw16(r))
-);
-byte_spec!(
-    Rgb565Be,
-    Rgb565,
-    2,
-    |c| rgb565_raw(c).to_be_bytes(),
-    |b| rgb565_from(u16::from_be_bytes(b)),
-    |r: &mut Rng| rgb565_from(rand_raw16(r))
-);
-byte_spec!(
-    Bgr565Le,
-    Bgr565,
-    2,
-    |c| bgr565_raw(c).to_le_bytes(),
-    |b| bgr565_from(u16::from_le_bytes(b)),
-    |r: &mut Rng| bgr565_from(rand_raw16(r))
-);
-byte_spec!(
-    Bgr565Be,
-    Bgr565,
-    2,
-    |c| bgr565_raw(c).to_be_bytes(),
-    |b| bgr565_from(u16::from_be_bytes(b)),
-    |r: &mut Rng| bgr565_from(rand_raw16(r))
-);
+/// The 16-bit formats, one a line: the colour's bits by `raw` and back
+/// by `col`, in the byte order of `to` and `from`.
+macro_rules! spec_565 {
+    ($($f:ty: $c:ty, $raw:ident, $col:ident, $to:ident, $from:ident;)*) => {$(
+        byte_spec!(
+            $f,
+            $c,
+            2,
+            |c| $raw(c).$to(),
+            |b| $col(u16::$from(b)),
+            |r: &mut Rng| $col(rand_raw16(r))
+        );
+    )*};
+}
+
+spec_565! {
+    Rgb565Le: Rgb565, rgb565_raw, rgb565_from, to_le_bytes, from_le_bytes;
+    Rgb565Be: Rgb565, rgb565_raw, rgb565_from, to_be_bytes, from_be_bytes;
+    Bgr565Le: Bgr565, bgr565_raw, bgr565_from, to_le_bytes, from_le_bytes;
+    Bgr565Be: Bgr565, bgr565_raw, bgr565_from, to_be_bytes, from_be_bytes;
+}
+
 byte_spec!(
     Rgb888Bytes,
     Rgb888,

@@ -1430,28 +1430,15 @@ fn polygon_construction_errors_and_rectangles() {
             assert_eq!(r3, Err(PolygonError::TooFewVertices { count: n }));
             assert_eq!(r16, Err(PolygonError::TooFewVertices { count: n }));
         } else {
-            assert_eq!(
-                r3,
-                if n > 3 {
-                    Err(PolygonError::CapacityExceeded {
-                        needed: n,
-                        capacity: 3,
-                    })
-                } else {
-                    Ok(())
-                }
-            );
-            assert_eq!(
-                r16,
-                if n > 16 {
-                    Err(PolygonError::CapacityExceeded {
-                        needed: n,
-                        capacity: 16,
-                    })
-                } else {
-                    Ok(())
-                }
-            );
+            let expected = |capacity: usize| match n > capacity {
+                true => Err(PolygonError::CapacityExceeded {
+                    needed: n,
+                    capacity,
+                }),
+                false => Ok(()),
+            };
+            assert_eq!(r3, expected(3));
+            assert_eq!(r16, expected(16));
         }
     }
     // An axis-aligned rectangle is one fill_solid, with the sampling rule's pixels.
