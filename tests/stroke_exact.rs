@@ -33,14 +33,18 @@
 //! pixel written at most once) and through `draw_spans` into a sink on
 //! which overdraw is invisible (the same pixels lit). Width 1 polylines
 //! are the 1-pixel Bresenham polyline, not a stroke, and are left out;
-//! outlines of triangles and polygons are strokes from width 1.
+//! outlines of triangles and polygons are strokes from width 1. A thick
+//! [`Line`] (width 2 and up, any [`LineAlgorithm`]) is defined as the
+//! rectangle of a two-point stroke (module docs of `line::thick`), so it
+//! is checked against the same reference.
 #![cfg(feature = "sim")]
 
 use core::convert::Infallible;
 
 use embedded_graphics_core::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
 use embedded_raster::{
-    sim::SimDisplay, Join, Polygon, Polyline, Span, SpanDrawable, SpanSink, Triangle, Vertex,
+    sim::SimDisplay, Join, Line, LineAlgorithm, Polygon, Polyline, Span, SpanDrawable, SpanSink,
+    Triangle, Vertex,
 };
 
 #[path = "common/rng.rs"]
@@ -489,6 +493,35 @@ fn check_polyline(points: &[Point], w: u32, join: Join, origin: Point, tally: &m
     compare(&shape, origin, &want, &(points, w, join, origin));
 }
 
+/// Checks the thick line from `a` to `b` (width `w >= 2`) with its
+/// default algorithm and with `algorithm`, in the window at `origin`, or
+/// if that is `None` at a random corner of the reference's rectangle.
+fn check_thick_line(
+    a: Point,
+    b: Point,
+    w: u32,
+    algorithm: LineAlgorithm,
+    origin: Option<Point>,
+    rng: &mut Rng,
+    tally: &mut Tally,
+) {
+    assert!(w >= 2, "width 1 is the 1-pixel line");
+    let reference = Reference::polyline(&[a, b], w, Join::Miter, tally);
+    let origin = origin.unwrap_or_else(|| match &reference.pieces[..] {
+        [Piece::Polygon(corners)] => {
+            let c = corners[rng.below(corners.len() as u64) as usize];
+            window_at((c.0.div_euclid(4096), c.1.div_euclid(4096)), rng)
+        }
+        other => unreachable!("a thick line is one rectangle: {}", other.len()),
+    });
+    let want = reference.render(origin, tally);
+    count(&want, tally);
+    let thick = Line::new(a, b).stroke(Gray8::WHITE).stroke_width(w);
+    let what = (a, b, w, origin);
+    compare(&thick, origin, &want, &what);
+    compare(&thick.algorithm(algorithm), origin, &want, &what);
+}
+
 /// Checks the outline of the polygon `v` (a triangle's when it has three
 /// vertices, drawn both ways) in the window at `origin`.
 fn check_outline(v: &[Vertex], w: u32, join: Join, origin: Point, tally: &mut Tally) {
@@ -707,6 +740,78 @@ fn far_clusters() {
     }
     eprintln!("{tally:?}");
     assert!(tally.far_lit > 300_000, "{tally:?}");
+}
+
+/// Thick lines: near the screen, short (zero length included) and long,
+/// widths from 2 to 12 and now and then huge (up to `u32::MAX`, drawn as
+/// 65,535); long ones within the 20.12 range (sides over 131,072 px, two
+/// triangles); ends anywhere in `i32`, seen at an end, at a corner or on
+/// the line.
+#[test]
+fn thick_lines() {
+    let mut rng = seeded(0xA076_1D64_78BD_642F);
+    let mut tally = Tally::default();
+    let algorithms = [
+        LineAlgorithm::Bresenham,
+        LineAlgorithm::Dda,
+        LineAlgorithm::Naive,
+    ];
+    for case in 0..3000 {
+        let near = |rng: &mut Rng| Point::new(rng.below(64) as i32 - 8, rng.below(64) as i32 - 8);
+        let in_range = |rng: &mut Rng| rng.below(1 << 20) as i32 - (1 << 19) + 8;
+        let (a, b) = match case % 5 {
+            0 | 1 => {
+                let a = near(&mut rng);
+                let b = match rng.below(6) {
+                    0 => a,
+                    1 => a + Point::new(rng.below(3) as i32 - 1, rng.below(3) as i32 - 1),
+                    _ => near(&mut rng),
+                };
+                (a, b)
+            }
+            2 => (
+                Point::new(in_range(&mut rng), in_range(&mut rng)),
+                Point::new(in_range(&mut rng), in_range(&mut rng)),
+            ),
+            _ => (
+                Point::new(far_coordinate(&mut rng), far_coordinate(&mut rng)),
+                match rng.below(3) {
+                    0 => near(&mut rng),
+                    _ => Point::new(far_coordinate(&mut rng), far_coordinate(&mut rng)),
+                },
+            ),
+        };
+        let w = match rng.below(12) {
+            0 => 13 + rng.below(200) as u32,
+            1 => [1000, 65535, 65536, u32::MAX][rng.below(4) as usize],
+            _ => width(&mut rng),
+        };
+        let origin = match (case % 5, rng.below(4)) {
+            (0 | 1, _) => Some(Point::zero()),
+            (_, 0) => Some(window_at(centre(a), &mut rng)),
+            (_, 1) => Some(window_at(centre(b), &mut rng)),
+            (_, 2) => None,
+            _ => {
+                let (a, b) = (centre(a), centre(b));
+                let t = i128::from(rng.below(1 << 20));
+                let on = (
+                    a.0 + (b.0 - a.0) * t / (1 << 20),
+                    a.1 + (b.1 - a.1) * t / (1 << 20),
+                );
+                Some(window_at(
+                    (on.0.div_euclid(4096), on.1.div_euclid(4096)),
+                    &mut rng,
+                ))
+            }
+        };
+        let algorithm = algorithms[case % 3];
+        check_thick_line(a, b, w, algorithm, origin, &mut rng, &mut tally);
+    }
+    eprintln!("{tally:?}");
+    assert!(
+        tally.lit > 3000 * 200 && tally.far_lit > 100_000,
+        "{tally:?}"
+    );
 }
 
 /// `d` rotated by `angle` radians and scaled by `scale`, rounded.
