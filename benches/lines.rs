@@ -4,7 +4,11 @@
 //! long lines and random lines that the screen's edges cut. Thick polylines
 //! 8 px wide: joined strokes (miter, round), the same segments as
 //! separate thick lines (overlapping, no joins), and embedded-graphics'
-//! `Polyline` with an 8 px stroke.
+//! `Polyline` with an 8 px stroke. Random thick lines (widths 2 to 12,
+//! ends anywhere on the screen, short and long): this crate's through
+//! `draw` and `draw_spans`, `slice::fill` of their exact spans (the
+//! limit), tiny-skia 0.12's non-anti-aliased `stroke_path` (butt caps)
+//! and embedded-graphics' `Line` with the same stroke width.
 //!
 //! `cargo bench --bench lines`; `benches/report_lines.py` turns the
 //! medians into the table in BENCHMARKS.md.
@@ -19,8 +23,9 @@ use embedded_graphics::{
 };
 use embedded_raster::{
     framebuffer::{buffer_size, Rgb565Le},
-    Framebuffer, Join, Line, LineAlgorithm, Polyline, SpanDrawable,
+    Framebuffer, Join, Line, LineAlgorithm, Polyline, Span, SpanDrawable, SpanSink,
 };
+use tiny_skia::{Paint, PathBuilder, Pixmap, Stroke, Transform};
 
 const W: i32 = 320;
 const H: i32 = 240;
@@ -217,11 +222,143 @@ fn thick_polylines(c: &mut Criterion) {
     }
 }
 
+/// 256 thick lines with random widths from 2 to 12 px, each end at
+/// least 8 px inside the screen: `short` ones up to 24 px along each
+/// axis, or with ends anywhere.
+fn thick_random(seed: u64, short: bool) -> Vec<(Point, Point, u32)> {
+    let mut rng = Rng(seed);
+    (0..256)
+        .map(|_| {
+            let mut end = |rng: &mut Rng| Point::new(8 + rng.below(W - 16), 8 + rng.below(H - 16));
+            let a = end(&mut rng);
+            let b = match short {
+                true => {
+                    let d = Point::new(rng.below(49) - 24, rng.below(49) - 24);
+                    (a + d)
+                        .component_max(Point::new(8, 8))
+                        .component_min(Point::new(W - 9, H - 9))
+                }
+                false => end(&mut rng),
+            };
+            (a, b, 2 + rng.below(11) as u32)
+        })
+        .collect()
+}
+
+/// The spans a sink receives, in order (overlapping spans kept).
+struct Recorder(Vec<Span>);
+
+impl SpanSink<Rgb565> for Recorder {
+    type Error = core::convert::Infallible;
+
+    fn bounds(&self) -> Rectangle {
+        Rectangle::new(Point::zero(), Size::new(W as u32, H as u32))
+    }
+
+    fn fill_span(&mut self, span: Span, _: Rgb565) -> Result<(), Self::Error> {
+        self.0.push(span);
+        Ok(())
+    }
+}
+
+fn thick_lines(c: &mut Criterion) {
+    for (name, lines) in [
+        ("thick lines short", thick_random(17, true)),
+        ("thick lines long", thick_random(19, false)),
+    ] {
+        let ours: Vec<_> = lines
+            .iter()
+            .map(|&(a, b, w)| Line::new(a, b).stroke(Rgb565::RED).stroke_width(w))
+            .collect();
+        let mut spans = Recorder(vec![]);
+        for l in &ours {
+            l.draw_spans(&mut spans).unwrap();
+        }
+        let spans = spans.0;
+        let pixels: u64 = spans.iter().map(|s| u64::from(s.len())).sum();
+        let mut g = c.benchmark_group(name);
+        // Per set; divide by the line count for ns/line.
+        g.throughput(Throughput::Elements(pixels));
+        let mut frame = vec![0u16; (W * H) as usize];
+        g.bench_function(BenchmarkId::new("limit", ours.len()), |b| {
+            b.iter(|| {
+                for s in &spans {
+                    let row = s.y as usize * W as usize;
+                    frame[row + s.x_start as usize..row + s.x_end as usize].fill(0xF800);
+                }
+                black_box(&frame);
+            })
+        });
+        let mut fb = Box::new(Fb::new());
+        g.bench_function(BenchmarkId::new("draw", ours.len()), |b| {
+            b.iter(|| {
+                for l in &ours {
+                    l.draw(&mut *fb).unwrap();
+                }
+                black_box(&fb);
+            })
+        });
+        g.bench_function(BenchmarkId::new("draw_spans", ours.len()), |b| {
+            b.iter(|| {
+                for l in &ours {
+                    l.draw_spans(&mut *fb).unwrap();
+                }
+                black_box(&fb);
+            })
+        });
+        let mut pixmap = Pixmap::new(W as u32, H as u32).unwrap();
+        let mut paint = Paint::default();
+        paint.set_color_rgba8(255, 0, 0, 255);
+        paint.anti_alias = false;
+        let skia: Vec<_> = lines
+            .iter()
+            .map(|&(a, b, w)| {
+                let mut pb = PathBuilder::new();
+                pb.move_to(a.x as f32 + 0.5, a.y as f32 + 0.5);
+                pb.line_to(b.x as f32 + 0.5, b.y as f32 + 0.5);
+                let stroke = Stroke {
+                    width: w as f32,
+                    ..Stroke::default()
+                };
+                (pb.finish(), stroke)
+            })
+            .collect();
+        g.bench_function(BenchmarkId::new("tiny-skia", ours.len()), |b| {
+            b.iter(|| {
+                for (path, stroke) in &skia {
+                    // A zero-length line has no path (and no butt-capped
+                    // pixels).
+                    if let Some(path) = path {
+                        pixmap.stroke_path(path, &paint, stroke, Transform::identity(), None);
+                    }
+                }
+                black_box(&pixmap);
+            })
+        });
+        let eg: Vec<_> = lines
+            .iter()
+            .map(|&(a, b, w)| {
+                EgLine::new(a, b).into_styled(PrimitiveStyle::with_stroke(Rgb565::GREEN, w))
+            })
+            .collect();
+        g.bench_function(BenchmarkId::new("embedded-graphics", ours.len()), |b| {
+            b.iter(|| {
+                for l in &eg {
+                    l.draw(&mut *fb).unwrap();
+                }
+                black_box(&fb);
+            })
+        });
+        g.finish();
+    }
+}
+
 fn lines(c: &mut Criterion) {
     bench_set(c, "lines 8 px", &short());
     bench_set(c, "lines 300 px", &long());
     bench_set(c, "lines cut", &cut());
     thick_polylines(c);
+    thick_lines(c);
 }
 
 criterion_group!(benches, lines);

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Prints the "Lines" table of BENCHMARKS.md from criterion's results.
+"""Prints the "Lines" tables of BENCHMARKS.md from criterion's results:
+1-pixel lines, then random thick lines.
 
 Run after `cargo bench --bench lines`; reads the median of each benchmark
 from <target>/criterion/<group>/<bench>/<n>/new/estimates.json, where
@@ -38,3 +39,19 @@ for g in GROUPS:
     row += [f"{pixels / r[p][0] * 1e3:.0f}" for p in PEERS]
     row.append(f"{ns / r['embedded-graphics'][0]:.2f}x")
     print("| " + " | ".join(row) + " |")
+
+THICK = ["thick lines short", "thick lines long"]
+THICK_PEERS = ["draw", "draw_spans", "tiny-skia", "embedded-graphics"]
+if all((ROOT / g).exists() for g in THICK):
+    print()
+    print("| thick lines | px/line | limit ns/line | " + " | ".join(f"{p} ns/line" for p in THICK_PEERS)
+          + " | " + " | ".join(f"{p} ÷ limit" for p in THICK_PEERS) + " | draw ÷ tiny-skia |")
+    print("|---" * (3 + 2 * len(THICK_PEERS) + 1) + "|")
+    for g in THICK:
+        limit, pixels, count = result(g, "limit")
+        r = {p: result(g, p)[0] for p in THICK_PEERS}
+        row = [f"{g.removeprefix('thick lines ')} (x{count})", f"{pixels / count:.0f}", f"{limit / count:.0f}"]
+        row += [f"{r[p] / count:.0f}" for p in THICK_PEERS]
+        row += [f"{limit / r[p]:.2f}" for p in THICK_PEERS]
+        row.append(f"{r['draw'] / r['tiny-skia']:.2f}x")
+        print("| " + " | ".join(row) + " |")
