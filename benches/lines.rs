@@ -229,7 +229,7 @@ fn thick_random(seed: u64, short: bool) -> Vec<(Point, Point, u32)> {
     let mut rng = Rng(seed);
     (0..256)
         .map(|_| {
-            let mut end = |rng: &mut Rng| Point::new(8 + rng.below(W - 16), 8 + rng.below(H - 16));
+            let end = |rng: &mut Rng| Point::new(8 + rng.below(W - 16), 8 + rng.below(H - 16));
             let a = end(&mut rng);
             let b = match short {
                 true => {

@@ -643,6 +643,108 @@ pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
     i128::try_from(t.div_ceil(2)).unwrap_or_default()
 }
 
+/// `floor((2^62 - 1) / s)` for `s` in `[2^30, 2^31)` (below `2^32`),
+/// without a 64-bit division, which a 32-bit core makes in software (a
+/// library call of about 330 instructions for this quotient on a
+/// Cortex-M4): a 15-bit estimate from one 32-bit division, two Newton
+/// steps, then the last units by the remainder.
+///
+/// The estimate `y0 = floor((2^32 - 1) / (floor(s / 2^15) + 1)) 2^15` is
+/// below `2^62 / s` by less than `2^-14` of it. A step `y + floor(y
+/// floor(e / 2^18) / 2^44)`, with `e = 2^62 - s y`, stays below `2^62 /
+/// s` (as `y (2 - s y / 2^62)` does) and squares the relative error,
+/// then loses at most 2 to the floors: after two, `y` is within 3 of
+/// `2^62 / s`, and at most three increments remain (over every `s` of
+/// the range, checked one by one: at most one). Every product is below
+/// `2^63`.
+fn reciprocal_62(s: u64) -> u64 {
+    let top = u32::try_from(s >> 15).unwrap_or(u32::MAX - 1) + 1;
+    let mut y = u64::from(u32::MAX / top) << 15;
+    for _ in 0..2 {
+        let e = (1 << 62) - s * y;
+        y += (y * (e >> 18)) >> 44;
+    }
+    let mut rem = ((1 << 62) - 1) - s * y;
+    while rem >= s {
+        y += 1;
+        rem -= s;
+    }
+    y
+}
+
+/// `round(a / sqrt(len2))` (halves up, exactly: [`div_sqrt`]'s values)
+/// for many `a` and one `len2 > 0`, the components of a segment's offsets:
+/// where `len2 < 2^62`, with one square root and one division set up
+/// once, then a few multiplications for each `a`, in `u64`.
+///
+/// Set up: `s = floor(sqrt(len2) 2^k) = isqrt(len2 4^k)`, with `k` such
+/// that `s` lies in `[2^30, 2^31)`, and `inv = floor((2^62 - 1) / s)`,
+/// below `2^32`. For `a < 2^(57 - k)` (so `x = 2^k a < 2^57` and `a /
+/// sqrt(len2) < 2^27`), `x inv / 2^62` lies within `(-1/32, 1/8)` of `a /
+/// sqrt(len2)`: `inv` is short of `2^62 / s` by less than 1 (at most
+/// `2^57 / 2^62` on the quotient), and `s` of `sqrt(len2) 2^k` by less
+/// than 1 (at most `2^27 / 2^30` more). Taken to 6 fractional bits, less
+/// `1/8`, plus `1/2`, its floor `r0` is the rounded quotient `r` or `r -
+/// 1`, and one exact test decides: `r = r0 + 1` iff `(2 r0 + 1)^2 len2 <=
+/// 4 a^2`. That test is in `u64` when `a < 2^30` and `len2 < 2^60` (both
+/// sides are below `(2 a + 2 sqrt(len2))^2 < 2^64`), else in `u128`.
+/// Other `a` and `len2` go through [`div_sqrt`].
+///
+/// Each [`div_sqrt`] divides and takes a square root in 64 bits at least:
+/// a thick line's four components took about 840 instructions on a
+/// Cortex-M4 that way (`.ci/itrace`).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct OverLength {
+    len2: u128,
+    /// `(k, inv)` where `len2 < 2^62`.
+    prepared: Option<(u32, u64)>,
+}
+
+impl OverLength {
+    /// Prepares the divisions by `sqrt(len2)`, `len2 > 0`.
+    #[inline]
+    pub(crate) fn new(len2: u128) -> Self {
+        let prepared = u64::try_from(len2)
+            .ok()
+            .filter(|&l| l > 0 && l < 1 << 62)
+            .map(|l| {
+                // `l` has `64 - lz` bits; `l 4^k` then has 61 or 62, so
+                // that `s` is in [2^30, 2^31).
+                let k = (l.leading_zeros() - 2) / 2;
+                let s = (l << (2 * k)).isqrt();
+                (k, reciprocal_62(s))
+            });
+        Self { len2, prepared }
+    }
+
+    /// `round(a / sqrt(len2))`, halves up. Out of line: one copy for
+    /// every offset.
+    #[inline(never)]
+    pub(crate) fn rounded(&self, a: u64) -> u64 {
+        if let (Some((k, inv)), Ok(len2)) = (self.prepared, u64::try_from(self.len2)) {
+            if a < 1 << (57 - k) {
+                let x = a << k;
+                // x inv / 2^56, floored, from two 32 by 32-bit products:
+                // below 2^57 and 2^64.
+                let (hi, lo) = ((x >> 32) * inv, (x & 0xFFFF_FFFF) * inv);
+                let sixty_fourths = (hi + (lo >> 32)) >> 24;
+                let r0 = (sixty_fourths + 24) >> 6;
+                let t = 2 * r0 + 1;
+                let up = match a < 1 << 30 && len2 < 1 << 60 {
+                    true => t * t * len2 <= 4 * a * a,
+                    false => {
+                        let t = u128::from(t);
+                        t * t * u128::from(len2) <= 4 * u128::from(a) * u128::from(a)
+                    }
+                };
+                return r0 + u64::from(up);
+            }
+        }
+        // At most a: it fits.
+        u64::try_from(div_sqrt(a.into(), self.len2)).unwrap_or_default()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1004,6 +1106,81 @@ mod tests {
             let a = x >> (5 + x % 40);
             let len2 = ((x >> 3) >> (x % 61)).max(1);
             check(a, len2);
+        }
+    }
+
+    /// [`reciprocal_62`] against the division, at both ends of its range
+    /// and at random.
+    #[test]
+    fn reciprocals_are_exact() {
+        let check = |s: u64| assert_eq!(reciprocal_62(s), ((1 << 62) - 1) / s, "1 / {s}");
+        for s in (1 << 30)..(1 << 30) + 5000 {
+            check(s);
+        }
+        for s in (1 << 31) - 5000..1 << 31 {
+            check(s);
+        }
+        for x in xorshift(0xA076_1D64_78BD_642F).take(1_000_000) {
+            check((1 << 30) | (x & ((1 << 30) - 1)));
+        }
+    }
+
+    /// [`OverLength`] against [`div_sqrt`] (itself checked against the
+    /// defining inequalities above): every `a` below 600 for every `len2`
+    /// up to 300; ties (`2 a = (2 r - 1) m` for `len2 = m^2`); both sides
+    /// of its bounds (`a` at `2^30` and `2^(57 - k)`, `len2` at `2^60` and
+    /// `2^62`); random `a` and `len2` at every magnitude, up to a stroke's
+    /// `a < 2^59` and `len2 < 2^65`.
+    #[test]
+    fn prepared_quotients_match_div_sqrt() {
+        let check = |a: u64, len2: u128| {
+            let want = u64::try_from(div_sqrt(a.into(), len2)).expect("fits");
+            assert_eq!(OverLength::new(len2).rounded(a), want, "{a} / sqrt({len2})");
+        };
+        for len2 in 1..=300 {
+            for a in 0..600 {
+                check(a, len2);
+            }
+        }
+        for m in 1u64..2000 {
+            for r in 1..40 {
+                let twice = (2 * r - 1) * m;
+                if twice % 2 == 0 {
+                    for a in [twice / 2 - 1, twice / 2, twice / 2 + 1] {
+                        check(a, u128::from(m * m));
+                    }
+                }
+            }
+        }
+        let near = |v: u64| [v.saturating_sub(1), v, v + 1];
+        for len2 in [1u128, 2, 3, 5, (1 << 60) - 1, 1 << 60, (1 << 60) + 1]
+            .into_iter()
+            .chain([(1 << 62) - 1, 1 << 62, (1 << 62) + 1, (1 << 64) + 3])
+        {
+            let l = u64::try_from(len2).unwrap_or(u64::MAX);
+            let k = (l.leading_zeros().max(2) - 2) / 2;
+            for edge in [1 << 30, 1u64 << (57 - k), 2048 * 65535, 1 << 31] {
+                for a in near(edge) {
+                    check(a, len2);
+                }
+            }
+        }
+        for x in xorshift(0x9E37_79B9_7F4A_7C15).take(200_000) {
+            let y = x.rotate_left(29) ^ 0xD1B5_4A32_D192_ED03;
+            let a = (x >> (5 + x % 59)).min((1 << 59) - 1);
+            let len2 = (u128::from(y) << (y % 2)) >> (y % 64);
+            check(a, len2.max(1));
+        }
+        // Segments on a screen: directions below 2^12 a component, the
+        // components of `e` and `n` for widths up to 65535.
+        for x in xorshift(0x94D0_49BB_1331_11EB).take(200_000) {
+            let (dx, dy) = (x & 0xFFF, (x >> 12) & 0xFFF);
+            let len2 = u128::from(dx * dx + dy * dy).max(1);
+            let w = 1 + (x >> 24) % if x % 4 == 0 { 65535 } else { 16 };
+            for c in [dx, dy] {
+                check(c * 2048, len2);
+                check(c * 2048 * w, len2);
+            }
         }
     }
 }

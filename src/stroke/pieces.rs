@@ -36,7 +36,7 @@
 
 use super::{Join, MITER_LIMIT};
 use crate::{
-    raster::wide::{div_sqrt, round_div, Wide},
+    raster::wide::{round_div, OverLength, Wide},
     vertex::Vertex,
 };
 
@@ -447,10 +447,10 @@ impl Segment {
         let shift = (d.0 | d.1).trailing_zeros().min(63);
         let d = [d.0 >> shift, d.1 >> shift];
         let square = |c: i64| u128::from(c.unsigned_abs() * c.unsigned_abs());
-        let len2 = square(d[0]) + square(d[1]);
+        let over_length = OverLength::new(square(d[0]) + square(d[1]));
         move |i, f| {
             let c = d[i & 1];
-            let scaled = div_sqrt(u128::from(c.unsigned_abs() * f.unsigned_abs()), len2);
+            let scaled = over_length.rounded(c.unsigned_abs() * f.unsigned_abs());
             // At most |f|: it fits.
             let scaled = i64::try_from(scaled).unwrap_or_default();
             if c < 0 {
