@@ -573,7 +573,7 @@ fn window_at(p: (i128, i128), rng: &mut Rng) -> Point {
 
 /// The generator of a test with seed `seed`, moved to another sequence
 /// by `STROKE_EXACT_SEED` (a number) when it is set: the deep run is a
-/// loop over seeds, `for s in $(seq 1 200); do STROKE_EXACT_SEED=$s cargo
+/// loop over seeds, `for s in $(seq 1 300); do STROKE_EXACT_SEED=$s cargo
 /// test --all-features --test stroke_exact || break; done` (the test
 /// profile keeps overflow checks on).
 fn seeded(seed: u64) -> Rng {

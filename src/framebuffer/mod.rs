@@ -89,13 +89,15 @@
 //! [`fill_contiguous`](DrawTarget::fill_contiguous) and
 //! [`clear`](DrawTarget::clear) clip the area once and then fill whole
 //! byte slices per row (one slice for all rows when the area spans whole
-//! rows without padding): a `memset` for single-byte or uniform pixels,
-//! masked end bytes and a `memset` of the repeated byte between for packed
-//! (1-, 2- and 4-bit) pixels, and for 2-,
-//! 3- and 4-byte pixels on 32-bit ARM aligned 32-bit words of the repeated
-//! pattern, 8 words a step (runs of `strd` on a Cortex-M4); other hosts'
-//! compilers vectorize the plain pixel loop. The bytes start on a 4-byte
-//! boundary. [`draw_iter`](DrawTarget::draw_iter) checks each pixel.
+//! rows without padding): masked end bytes and a `memset` of the
+//! repeated byte between for packed (1-, 2- and 4-bit) pixels; for byte
+//! pixels whose bytes are all equal, a `memset` (on a host always, on a
+//! Cortex-M for 1- and 3-byte pixels); other spans of 16 pixels or more
+//! as aligned 32-bit words of the repeated pattern, 8 words a step (runs
+//! of `strd` on a Cortex-M4, vector stores on a host), and on cores that
+//! store unaligned words shorter spans of 2-byte pixels as overlapping
+//! words (on a host, overlapping 16-, 8- or 4-byte blocks): see the
+//! README, "Framebuffer formats". The bytes start on a 4-byte boundary. [`draw_iter`](DrawTarget::draw_iter) checks each pixel.
 //! Whatever the coordinates and sizes, everything outside the framebuffer
 //! is ignored, without overflow or panic.
 //!

@@ -648,8 +648,8 @@ impl<C: ShadeColor> GouraudTriangle<C> {
 /// `triangle`'s spans inside `clip`, through one copy of the triangle
 /// walk for every kind of shading (one per error type), not one per
 /// caller's closure: a shaded span costs far more than the call through
-/// the `dyn` reference, while each copy of the walk is about 3 KB of flash
-/// on a Cortex-M4.
+/// the `dyn` reference, while each copy of the walk (`triangle_spans`
+/// and its rows' loops) took about 2.2 KB of flash on a Cortex-M4.
 #[inline(never)]
 pub(crate) fn shaded_spans<E>(
     triangle: &Triangle,
