@@ -15,7 +15,10 @@
 
 use std::hint::black_box;
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::{
+    criterion_group, criterion_main, measurement::WallTime, BenchmarkGroup, BenchmarkId, Criterion,
+    Throughput,
+};
 use embedded_graphics::{
     pixelcolor::Rgb565,
     prelude::*,
@@ -145,19 +148,29 @@ fn bench_set(c: &mut Criterion, name: &str, lines: &[(Point, Point)]) {
             })
         });
     }
+    bench_eg_lines(&mut g, &mut fb, lines.iter().map(|&(a, b)| (a, b, 1)));
+    g.finish();
+}
+
+/// embedded-graphics' `Line`s, each with its stroke width, drawn on `fb`.
+fn bench_eg_lines(
+    g: &mut BenchmarkGroup<'_, WallTime>,
+    fb: &mut Fb,
+    lines: impl Iterator<Item = (Point, Point, u32)>,
+) {
     let eg: Vec<_> = lines
-        .iter()
-        .map(|&(a, b)| EgLine::new(a, b).into_styled(PrimitiveStyle::with_stroke(Rgb565::GREEN, 1)))
+        .map(|(a, b, w)| {
+            EgLine::new(a, b).into_styled(PrimitiveStyle::with_stroke(Rgb565::GREEN, w))
+        })
         .collect();
-    g.bench_function(BenchmarkId::new("embedded-graphics", ours.len()), |b| {
+    g.bench_function(BenchmarkId::new("embedded-graphics", eg.len()), |b| {
         b.iter(|| {
             for l in &eg {
-                l.draw(&mut *fb).unwrap();
+                l.draw(fb).unwrap();
             }
             black_box(&fb);
         })
     });
-    g.finish();
 }
 
 /// A 21-point zigzag across the framebuffer and a noisy 320-point trace.
@@ -335,20 +348,7 @@ fn thick_lines(c: &mut Criterion) {
                 black_box(&pixmap);
             })
         });
-        let eg: Vec<_> = lines
-            .iter()
-            .map(|&(a, b, w)| {
-                EgLine::new(a, b).into_styled(PrimitiveStyle::with_stroke(Rgb565::GREEN, w))
-            })
-            .collect();
-        g.bench_function(BenchmarkId::new("embedded-graphics", ours.len()), |b| {
-            b.iter(|| {
-                for l in &eg {
-                    l.draw(&mut *fb).unwrap();
-                }
-                black_box(&fb);
-            })
-        });
+        bench_eg_lines(&mut g, &mut fb, lines.iter().copied());
         g.finish();
     }
 }
