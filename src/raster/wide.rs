@@ -628,18 +628,14 @@ fn isqrt_by_digits(n: u128) -> u128 {
 /// `round(a / sqrt(len2))` (`len2 > 0`, halves up), exactly: with `t =
 /// floor(2 a / sqrt(len2)) = isqrt(floor(4 a^2 / len2))`, the nearest
 /// integer is `ceil(t / 2)`. The callers keep `a < 2^59`, so `4 a^2 <
-/// 2^120`. In 64 bits when `a < 2^31` (then `4 a^2 < 2^64`) and `len2`
-/// fits, which any thick line or stroke on a screen meets: tested on
-/// `a` first, so that no 128-bit product is taken for it (a Cortex-M4
-/// multiplies `u128` through a library call).
+/// 2^120`. In 128 bits: the segments on and near a screen take
+/// [`OverLength`], and only the rest (a length over `2^31`, a quotient
+/// over `2^27`) comes here.
 pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
-    let t = match (u64::try_from(a), u64::try_from(len2)) {
-        (Ok(a), Ok(len2)) if a < 1 << 31 => u128::from((4 * a * a / len2).isqrt()),
-        _ => match NonZeroU128::new(len2) {
-            Some(len2) => isqrt_u128(div_rem_u128(4 * a * a, len2).0),
-            // Unreachable (`len2 > 0`).
-            None => 0,
-        },
+    let t = match NonZeroU128::new(len2) {
+        Some(len2) => isqrt_u128(div_rem_u128(4 * a * a, len2).0),
+        // Unreachable (`len2 > 0`).
+        None => 0,
     };
     i128::try_from(t.div_ceil(2)).unwrap_or_default()
 }
@@ -1069,8 +1065,8 @@ mod tests {
     /// `div_sqrt` against the defining inequalities
     /// of `r = round(a / sqrt(len2))`, halves up: `(2 r - 1)^2 len2 <= 4
     /// a^2 < (2 r + 1)^2 len2` (for `r = 0`, only the right one), checked
-    /// in `u128` with no square root, on both sides of the 64-bit path's
-    /// bound `a < 2^31` and up to the callers' `a < 2^59`.
+    /// in `u128` with no square root, from small values up to the
+    /// callers' `a < 2^59`.
     #[test]
     fn rounded_quotients_of_square_roots() {
         let check = |a: u64, len2: u64| {
