@@ -97,7 +97,8 @@
 //! of `strd` on a Cortex-M4, vector stores on a host), and on cores that
 //! store unaligned words shorter spans of 2-byte pixels as overlapping
 //! words (on a host, overlapping 16-, 8- or 4-byte blocks): see the
-//! README, "Framebuffer formats". The bytes start on a 4-byte boundary. [`draw_iter`](DrawTarget::draw_iter) checks each pixel.
+//! README, "Framebuffer formats". The bytes start on a 4-byte boundary.
+//! [`draw_iter`](DrawTarget::draw_iter) checks each pixel.
 //! Whatever the coordinates and sizes, everything outside the framebuffer
 //! is ignored, without overflow or panic.
 //!

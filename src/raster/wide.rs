@@ -136,8 +136,8 @@ macro_rules! shift_subtract {
 ///
 /// The library routine a 64-bit division links there takes about 1 KB of
 /// flash (864 + 136 bytes on a Cortex-M4 at opt-level "s"); this took
-/// 372 when measured (364 in BENCHMARKS.md's later count). Only shapes off the 32-bit path divide in 64
-/// bits (a triangle over 128 px a side, an edge reaching far off the
+/// 372 when measured (364 in BENCHMARKS.md's later count). Only shapes
+/// off the 32-bit path divide in 64 bits (a triangle over 128 px a side, an edge reaching far off the
 /// screen, a line clipped to the screen), once or twice per edge, where
 /// the quotient's bits (about 14 instructions each) are small beside the
 /// pixels they light: on the Cortex-M4, when this was chosen, a line
@@ -629,8 +629,8 @@ fn isqrt_by_digits(n: u128) -> u128 {
 /// floor(2 a / sqrt(len2)) = isqrt(floor(4 a^2 / len2))`, the nearest
 /// integer is `ceil(t / 2)`. The callers keep `a < 2^59`, so `4 a^2 <
 /// 2^120`. In 128 bits: the segments on and near a screen take
-/// [`OverLength`], and only the rest (a length over `2^31`, a quotient
-/// over `2^27`) comes here.
+/// [`OverLength`], and only the rest (a length of `2^31` or more, a
+/// quotient over about `2^26`) comes here.
 pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
     let t = match NonZeroU128::new(len2) {
         Some(len2) => isqrt_u128(div_rem_u128(4 * a * a, len2).0),
