@@ -137,8 +137,9 @@ macro_rules! shift_subtract {
 /// The library routine a 64-bit division links there takes about 1 KB of
 /// flash (864 + 136 bytes on a Cortex-M4 at opt-level "s"); this took
 /// 372 when measured (364 in BENCHMARKS.md's later count). Only shapes
-/// off the 32-bit path divide in 64 bits (a triangle over 128 px a side, an edge reaching far off the
-/// screen, a line clipped to the screen), once or twice per edge, where
+/// off the 32-bit path divide in 64 bits (a triangle over 128 px a side,
+/// an edge reaching far off the screen, a line clipped to the screen),
+/// once or twice per edge, where
 /// the quotient's bits (about 14 instructions each) are small beside the
 /// pixels they light: on the Cortex-M4, when this was chosen, a line
 /// with ends 10^6 px off the screen cost 13 % more than with the library
