@@ -198,6 +198,18 @@ mod target {
             let Ok(()) = black_box(line).draw_spans(black_box(&mut *FB));
         }
         end();
+        // Random thick lines, short then long, as the host bench's sets.
+        for short in [true, false] {
+            let thick: [_; 64] = core::array::from_fn(|_| {
+                let (line, width) = super::builtin_scene::random_thick_line(&mut rng, short);
+                line.stroke(Rgb565::RED).stroke_width(width)
+            });
+            begin();
+            for line in black_box(&thick) {
+                let Ok(()) = black_box(line).draw_spans(black_box(&mut *FB));
+            }
+            end();
+        }
         let shapes: &'static _ = SHAPES.insert(super::builtin_scene::SceneShapes::new());
         let list = LIST.insert(SceneList::new());
         if super::builtin_scene::for_each_command(shapes, |c| list.push(c)).is_err() {

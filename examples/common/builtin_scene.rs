@@ -137,6 +137,26 @@ pub fn cut_line(rng: &mut Rng) -> Line {
     }
 }
 
+/// A random thick line as in the host bench's sets (`benches/lines.rs`):
+/// 2 to 12 px wide, both ends at least 8 px inside the screen; a `short`
+/// one ends within 24 px of its start along each axis.
+pub fn random_thick_line(rng: &mut Rng, short: bool) -> (Line, u32) {
+    let (w, h) = (WIDTH as i32, HEIGHT as i32);
+    let mut end =
+        |rng: &mut Rng| Point::new(w / 2 + rng.signed(w / 2 - 8), h / 2 + rng.signed(h / 2 - 8));
+    let a = end(rng);
+    let b = match short {
+        true => {
+            let d = Point::new(rng.signed(24), rng.signed(24));
+            (a + d)
+                .component_max(Point::new(8, 8))
+                .component_min(Point::new(w - 9, h - 9))
+        }
+        false => end(rng),
+    };
+    (Line::new(a, b), 2 + rng.next_u32() % 11)
+}
+
 /// A small deterministic generator (xorshift32).
 #[derive(Debug, Clone)]
 pub struct Rng(u32);
