@@ -142,7 +142,7 @@ pub fn cut_line(rng: &mut Rng) -> Line {
 /// one ends within 24 px of its start along each axis.
 pub fn random_thick_line(rng: &mut Rng, short: bool) -> (Line, u32) {
     let (w, h) = (WIDTH as i32, HEIGHT as i32);
-    let mut end =
+    let end =
         |rng: &mut Rng| Point::new(w / 2 + rng.signed(w / 2 - 8), h / 2 + rng.signed(h / 2 - 8));
     let a = end(rng);
     let b = match short {
