@@ -694,8 +694,8 @@ fn reciprocal_62(s: u64) -> u64 {
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OverLength {
     len2: u128,
-    /// `(k, inv)` where `len2 < 2^62`.
-    prepared: Option<(u32, u64)>,
+    /// `(len2, k, inv)` where `len2 < 2^62`.
+    prepared: Option<(u64, u32, u64)>,
 }
 
 impl OverLength {
@@ -710,7 +710,7 @@ impl OverLength {
                 // that `s` is in [2^30, 2^31).
                 let k = (l.leading_zeros() - 2) / 2;
                 let s = (l << (2 * k)).isqrt();
-                (k, reciprocal_62(s))
+                (l, k, reciprocal_62(s))
             });
         Self { len2, prepared }
     }
@@ -719,7 +719,7 @@ impl OverLength {
     /// every offset.
     #[inline(never)]
     pub(crate) fn rounded(&self, a: u64) -> u64 {
-        if let (Some((k, inv)), Ok(len2)) = (self.prepared, u64::try_from(self.len2)) {
+        if let Some((len2, k, inv)) = self.prepared {
             if a < 1 << (57 - k) {
                 let x = a << k;
                 // x inv / 2^56, floored, from two 32 by 32-bit products:
