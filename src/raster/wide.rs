@@ -641,6 +641,31 @@ pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
     i128::try_from(t.div_ceil(2)).unwrap_or_default()
 }
 
+/// `floor(sqrt(n))` for `n` in `[2^60, 2^62)` (so in `[2^30, 2^31)`), by
+/// one step of the digit-pair square root over `u32::isqrt`, with one
+/// 32-bit division where `u64::isqrt` divides 64 bits (in software on a
+/// 32-bit core: on a Cortex-M4, `.ci/itrace`'s thick lines, about 160
+/// instructions a square root, 52 of them the library's division).
+///
+/// With `a = isqrt(floor(n / 2^30))` in `[2^15, 2^16)`, `A = 2^15 a` and
+/// `r = n - A^2`, in `[0, (2 a + 1) 2^30)` (below `2^47`): `sqrt(n) - A =
+/// r / (sqrt(n) + A)`, which `r / 2A` exceeds by at most `r^2 / 8 A^3 <
+/// (2 a + 1)^2 2^15 / 8 a^3 < 0.51` (with `a >= 2^15`). So `A + floor(r /
+/// 2A)` is the root or one more, and one exact test decides. `floor(r /
+/// 2A) = floor(floor(r / 2^16) / a)`, a 32-bit division (`r / 2^16 <
+/// 2^31`); every square is below `2^62 + 2^32`.
+fn isqrt_62(n: u64) -> u64 {
+    let top = u32::try_from(n >> 30).unwrap_or(u32::MAX);
+    let a = top.isqrt();
+    let r = n - (u64::from(a * a) << 30);
+    let q = u32::try_from(r >> 16).unwrap_or(u32::MAX) / a.max(1);
+    let s = (u64::from(a) << 15) + u64::from(q);
+    match s * s > n {
+        true => s - 1,
+        false => s,
+    }
+}
+
 /// `floor((2^62 - 1) / s)` for `s` in `[2^30, 2^31)` (below `2^32`),
 /// without a 64-bit division, which a 32-bit core makes in software (a
 /// library call of about 330 instructions for this quotient on a
@@ -709,7 +734,7 @@ impl OverLength {
                 // `l` has `64 - lz` bits; `l 4^k` then has 61 or 62, so
                 // that `s` is in [2^30, 2^31).
                 let k = (l.leading_zeros() - 2) / 2;
-                let s = (l << (2 * k)).isqrt();
+                let s = isqrt_62(l << (2 * k));
                 (l, k, reciprocal_62(s))
             });
         Self { len2, prepared }
@@ -1120,6 +1145,36 @@ mod tests {
         }
         for x in xorshift(0xA076_1D64_78BD_642F).take(1_000_000) {
             check((1 << 30) | (x & ((1 << 30) - 1)));
+        }
+    }
+
+    /// The 62-bit square root against `u64::isqrt`: both ends of the
+    /// range, both sides of every square of the first digit pair (where
+    /// the remainder `r` is least and greatest), squares of the result and
+    /// their neighbours, and random values.
+    #[test]
+    fn square_roots_of_62_bits_are_exact() {
+        let check = |n: u64| assert_eq!(isqrt_62(n), n.isqrt(), "sqrt {n}");
+        for n in [1 << 60, (1 << 60) + 1, (1 << 62) - 2, (1 << 62) - 1] {
+            check(n);
+        }
+        for a in 1u64 << 15..1 << 16 {
+            let low = (a * a) << 30;
+            for n in [low, low + 1, (((a + 1) * (a + 1)) << 30) - 1] {
+                if (1 << 60..1 << 62).contains(&n) {
+                    check(n);
+                }
+            }
+        }
+        let mut random = xorshift(0x2545_F491_4F6C_DD1D);
+        for _ in 0..200_000 {
+            let s = (1 << 30) | (random.next().unwrap_or(0) & ((1 << 31) - 1));
+            for n in [s * s - 1, s * s, s * s + 1, s * s + 2 * s] {
+                if (1 << 60..1 << 62).contains(&n) {
+                    check(n);
+                }
+            }
+            check((1 << 60) + random.next().unwrap_or(0) % (3 << 60));
         }
     }
 
