@@ -122,45 +122,16 @@ fn walk_monotone<E>(
         Shape::Polygon | Shape::Convex => {
             walk_chains::<false, _, _>(frame, chain(true), chain(false), emit)
         }
-        Shape::Parallelogram if n == 4 => {
-            walk_parallelogram(frame, small, [p(0), p(1), p(2), p(3)], emit)
-        }
+        // Coordinates within the bound: the orientation is exact. Of no
+        // area, it lights nothing. Clockwise on screen, the forward chain
+        // runs down the right side.
+        Shape::Parallelogram if n == 4 => match orientation(p(0), p(1), p(2)) {
+            0 => Ok(()),
+            t if t > 0 => walk_chains::<true, _, _>(frame, chain(false), chain(true), emit),
+            _ => walk_chains::<true, _, _>(frame, chain(true), chain(false), emit),
+        },
         Shape::Parallelogram => return None,
     })
-}
-
-/// [`walk_monotone`] for a parallelogram `c` (relative to the frame, in
-/// order round it): its chains known from its top corner alone, the
-/// corner opposite being its bottom one (`y_(t+2) = y_(t+1) + y_(t+3) -
-/// y_t`), so that its four edges are set up at once, with no [`Chain`]
-/// looking for the bottom.
-fn walk_parallelogram<E>(
-    frame: &Frame,
-    small: bool,
-    c: [(i32, i32); 4],
-    emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
-) -> Result<(), E> {
-    // The first corner at the least y, as a chain starts.
-    let top = (0..4).min_by_key(|&k| c[k].1).unwrap_or(0);
-    let at = |k: usize| c[(top + k) % 4];
-    // Down from `a` to `b` (or level), left out if it crosses no row.
-    let edge = |a: (i32, i32), b: (i32, i32)| match small {
-        true => Edge::new_small(a, b),
-        false => Edge::new(a, b, 0),
-    };
-    let chain = |side: usize| {
-        [edge(at(0), at(side)), edge(at(side), at(2))]
-            .into_iter()
-            .flatten()
-    };
-    // Coordinates within the bound: the orientation is exact. Of no area,
-    // it lights nothing. Clockwise on screen, the forward chain (through
-    // corner `t + 1`) runs down the right side.
-    match orientation(c[0], c[1], c[2]) {
-        0 => Ok(()),
-        t if t > 0 => walk_chains::<true, _, _>(frame, chain(3), chain(1), emit),
-        _ => walk_chains::<true, _, _>(frame, chain(1), chain(3), emit),
-    }
 }
 
 /// The edges of a y-monotone polygon's chain, top to bottom: from vertex `at`

@@ -641,6 +641,34 @@ pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
     i128::try_from(t.div_ceil(2)).unwrap_or_default()
 }
 
+/// `floor(sqrt(n))` for any `n`, through [`isqrt_62`]: `n` times the
+/// power of 4 that brings it into `[2^60, 2^62)`, the root then divided
+/// by its square root (`floor(floor(2^k x) / 2^k) = floor(x)`); over
+/// `2^62`, `2 isqrt(floor(n / 4))` or one more, one exact test deciding
+/// (`floor(sqrt(floor(n / 4))) = floor(sqrt(n) / 2)`).
+///
+/// Every square root of the crate: one copy, where the library's
+/// `u64::isqrt` divides 64 bits on a 32-bit core and was inlined into
+/// each of its callers once it had few.
+#[inline(never)]
+pub(crate) fn isqrt_u64(n: u64) -> u64 {
+    match n.leading_zeros() {
+        64 => 0,
+        0 | 1 => {
+            let s = 2 * isqrt_62(n >> 2);
+            // s + 1 < 2^32: its square fits.
+            match (s + 1) * (s + 1) <= n {
+                true => s + 1,
+                false => s,
+            }
+        }
+        zeros => {
+            let k = (zeros - 2) / 2;
+            isqrt_62(n << (2 * k)) >> k
+        }
+    }
+}
+
 /// `floor(sqrt(n))` for `n` in `[2^60, 2^62)` (so in `[2^30, 2^31)`), by
 /// one step of the digit-pair square root over `u32::isqrt`, with one
 /// 32-bit division where `u64::isqrt` divides 64 bits (in software on a
@@ -1175,6 +1203,37 @@ mod tests {
                 }
             }
             check((1 << 60) + random.next().unwrap_or(0) % (3 << 60));
+        }
+    }
+
+    /// Every square root against `u64::isqrt`: all `n` below `2^17`, both
+    /// sides of every power of two and of squares at every magnitude (the
+    /// scalings by powers of 4 and the test over `2^62`), the largest
+    /// values and random ones of every length.
+    #[test]
+    fn square_roots_are_exact() {
+        let check = |n: u64| assert_eq!(isqrt_u64(n), n.isqrt(), "sqrt {n}");
+        for n in 0..1 << 17 {
+            check(n);
+        }
+        for bit in 0..64 {
+            let p = 1u64 << bit;
+            for n in [p - 1, p, p + 1] {
+                check(n);
+            }
+        }
+        for n in [u64::MAX, u64::MAX - 1, u64::MAX - (1 << 32)] {
+            check(n);
+        }
+        let mut random = xorshift(0x94D0_49BB_1331_11EB);
+        for _ in 0..200_000 {
+            let x = random.next().unwrap_or(0);
+            let s = x >> (x % 32 + 32);
+            let square = s * s;
+            for n in [square.saturating_sub(1), square, square + 1, square + 2 * s] {
+                check(n);
+            }
+            check(x >> (x % 64));
         }
     }
 

@@ -36,7 +36,7 @@
 
 use super::{Join, MITER_LIMIT};
 use crate::{
-    raster::wide::{round_div, OverLength, Wide},
+    raster::wide::{isqrt_u64, round_div, OverLength, Wide},
     vertex::Vertex,
 };
 
@@ -388,7 +388,8 @@ impl Piece {
                 }
                 region.disk = Some((centre, r2));
                 // Rows beyond the disk's top and bottom cross nothing.
-                let r = r2.isqrt() + 1;
+                // r2 >= 0, and a root of 64 bits has 32: the cast is exact.
+                let r = isqrt_u64(r2.unsigned_abs()) as i64 + 1;
                 region.ys = (centre.1 - r, centre.1 + r);
                 Some(region)
             }

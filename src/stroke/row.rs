@@ -16,7 +16,10 @@ use embedded_graphics_core::primitives::Rectangle;
 use super::pieces::Region;
 use crate::{
     clip::Bounds,
-    raster::edge::{threshold_on_row, Edge},
+    raster::{
+        edge::{threshold_on_row, Edge},
+        wide::isqrt_u64,
+    },
 };
 
 /// Raw units per pixel, and half of it (a pixel centre's offset).
@@ -218,7 +221,8 @@ fn disk_interval(c: (i64, i64), r2: i64, py: i64) -> Option<(i64, i64)> {
     if d < 0 {
         return None;
     }
-    let s = d.isqrt();
+    // A root of 64 bits has 32: the cast is exact.
+    let s = isqrt_u64(d.unsigned_abs()) as i64;
     let (ul, uh) = if s * s < d {
         (-s, s)
     } else if s > 0 {
