@@ -156,7 +156,7 @@ use row::{Mask, RowWalk, Tile, MASK_BITS, MASK_WORDS};
 /// thick lines, which overlap and leave notches, take 20 µs and 0.14 ms,
 /// and embedded-graphics 0.8's `Polyline` with the same stroke 1.4 ms and
 /// 16.4 ms, in the same run. On a Cortex-M4 (`.ci/itrace`) the zigzag
-/// takes 0.40 million instructions through `draw_spans` and 0.86 million
+/// takes 0.39 million instructions through `draw_spans` and 0.85 million
 /// through `draw`, its separate thick lines 0.29 million.
 ///
 /// # Ranges
