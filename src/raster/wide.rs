@@ -641,21 +641,31 @@ pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
     i128::try_from(t.div_ceil(2)).unwrap_or_default()
 }
 
-/// `floor(sqrt(n))` for any `n`, through [`isqrt_62`]: `n` times the
-/// power of 4 that brings it into `[2^60, 2^62)`, the root then divided
-/// by its square root (`floor(floor(2^k x) / 2^k) = floor(x)`); over
-/// `2^62`, `2 isqrt(floor(n / 4))` or one more, one exact test deciding
-/// (`floor(sqrt(floor(n / 4))) = floor(sqrt(n) / 2)`).
-///
-/// Every square root of the crate: one copy, where the library's
-/// `u64::isqrt` divides 64 bits on a 32-bit core and was inlined into
-/// each of its callers once it had few.
-#[inline(never)]
+/// `floor(sqrt(n))`, every square root of the crate: the library's on
+/// 64-bit targets, which divide 64 bits in one instruction; on 32-bit
+/// ones [`isqrt_by_steps`], where the library's `u64::isqrt` divides 64
+/// bits in software (and was inlined into each of its callers once it
+/// had few). On x86-64, `isqrt_by_steps` in its place took 39
+/// instructions more a thick line (callgrind).
+#[inline]
 pub(crate) fn isqrt_u64(n: u64) -> u64 {
+    match cfg!(target_pointer_width = "32") {
+        true => isqrt_by_steps(n),
+        false => n.isqrt(),
+    }
+}
+
+/// `floor(sqrt(n))` for any `n`, through [`isqrt_62_by_step`]: `n` times
+/// the power of 4 that brings it into `[2^60, 2^62)`, the root then
+/// divided by its square root (`floor(floor(2^k x) / 2^k) = floor(x)`);
+/// over `2^62`, `2 isqrt(floor(n / 4))` or one more, one exact test
+/// deciding (`floor(sqrt(floor(n / 4))) = floor(sqrt(n) / 2)`).
+#[inline(never)]
+fn isqrt_by_steps(n: u64) -> u64 {
     match n.leading_zeros() {
         64 => 0,
         0 | 1 => {
-            let s = 2 * isqrt_62(n >> 2);
+            let s = 2 * isqrt_62_by_step(n >> 2);
             // s + 1 < 2^32: its square fits.
             match (s + 1) * (s + 1) <= n {
                 true => s + 1,
@@ -664,8 +674,18 @@ pub(crate) fn isqrt_u64(n: u64) -> u64 {
         }
         zeros => {
             let k = (zeros - 2) / 2;
-            isqrt_62(n << (2 * k)) >> k
+            isqrt_62_by_step(n << (2 * k)) >> k
         }
+    }
+}
+
+/// `floor(sqrt(n))` for `n` in `[2^60, 2^62)`: [`isqrt_62_by_step`] on
+/// 32-bit targets, the library's on 64-bit ones ([`isqrt_u64`]).
+#[inline(always)]
+fn isqrt_62(n: u64) -> u64 {
+    match cfg!(target_pointer_width = "32") {
+        true => isqrt_62_by_step(n),
+        false => n.isqrt(),
     }
 }
 
@@ -673,7 +693,8 @@ pub(crate) fn isqrt_u64(n: u64) -> u64 {
 /// one step of the digit-pair square root over `u32::isqrt`, with one
 /// 32-bit division where `u64::isqrt` divides 64 bits (in software on a
 /// 32-bit core: on a Cortex-M4, `.ci/itrace`'s thick lines, about 160
-/// instructions a square root, 52 of them the library's division).
+/// instructions a square root, 52 of them the library's division; 90
+/// this way).
 ///
 /// With `a = isqrt(floor(n / 2^30))` in `[2^15, 2^16)`, `A = 2^15 a` and
 /// `r = n - A^2`, in `[0, (2 a + 1) 2^30)` (below `2^47`): `sqrt(n) - A =
@@ -682,7 +703,7 @@ pub(crate) fn isqrt_u64(n: u64) -> u64 {
 /// 2A)` is the root or one more, and one exact test decides. `floor(r /
 /// 2A) = floor(floor(r / 2^16) / a)`, a 32-bit division (`r / 2^16 <
 /// 2^31`); every square is below `2^62 + 2^32`.
-fn isqrt_62(n: u64) -> u64 {
+fn isqrt_62_by_step(n: u64) -> u64 {
     let top = u32::try_from(n >> 30).unwrap_or(u32::MAX);
     let a = top.isqrt();
     let r = n - (u64::from(a * a) << 30);
@@ -1182,7 +1203,7 @@ mod tests {
     /// their neighbours, and random values.
     #[test]
     fn square_roots_of_62_bits_are_exact() {
-        let check = |n: u64| assert_eq!(isqrt_62(n), n.isqrt(), "sqrt {n}");
+        let check = |n: u64| assert_eq!(isqrt_62_by_step(n), n.isqrt(), "sqrt {n}");
         for n in [1 << 60, (1 << 60) + 1, (1 << 62) - 2, (1 << 62) - 1] {
             check(n);
         }
@@ -1212,7 +1233,7 @@ mod tests {
     /// values and random ones of every length.
     #[test]
     fn square_roots_are_exact() {
-        let check = |n: u64| assert_eq!(isqrt_u64(n), n.isqrt(), "sqrt {n}");
+        let check = |n: u64| assert_eq!(isqrt_by_steps(n), n.isqrt(), "sqrt {n}");
         for n in 0..1 << 17 {
             check(n);
         }
