@@ -655,15 +655,21 @@ pub(crate) fn isqrt_u64(n: u64) -> u64 {
     }
 }
 
-/// `floor(sqrt(n))` for any `n`, through [`isqrt_62_by_step`]: `n` times
-/// the power of 4 that brings it into `[2^60, 2^62)`, the root then
-/// divided by its square root (`floor(floor(2^k x) / 2^k) = floor(x)`);
-/// over `2^62`, `2 isqrt(floor(n / 4))` or one more, one exact test
-/// deciding (`floor(sqrt(floor(n / 4))) = floor(sqrt(n) / 2)`).
+/// `floor(sqrt(n))` for any `n`: below `2^32` the library's `u32::isqrt`
+/// (a round join's rows, whose square roots are of a few pixels squared:
+/// taking them through [`isqrt_62_by_step`] as well cost 2 % more on
+/// `.ci/itrace`'s round-joined zigzag); above, through
+/// [`isqrt_62_by_step`]: `n` times the power of 4 that brings it into
+/// `[2^60, 2^62)`, the root then divided by its square root
+/// (`floor(floor(2^k x) / 2^k) = floor(x)`); over `2^62`, `2
+/// isqrt(floor(n / 4))` or one more, one exact test deciding
+/// (`floor(sqrt(floor(n / 4))) = floor(sqrt(n) / 2)`).
 #[inline(never)]
 fn isqrt_by_steps(n: u64) -> u64 {
+    if let Ok(n) = u32::try_from(n) {
+        return u64::from(n.isqrt());
+    }
     match n.leading_zeros() {
-        64 => 0,
         0 | 1 => {
             let s = 2 * isqrt_62_by_step(n >> 2);
             // s + 1 < 2^32: its square fits.
