@@ -89,15 +89,19 @@
 //! [`fill_contiguous`](DrawTarget::fill_contiguous) and
 //! [`clear`](DrawTarget::clear) clip the area once and then fill whole
 //! byte slices per row (one slice for all rows when the area spans whole
-//! rows without padding): masked end bytes and a `memset` of the
-//! repeated byte between for packed (1-, 2- and 4-bit) pixels; for byte
-//! pixels whose bytes are all equal, a `memset` (on a host always, on a
-//! Cortex-M for 1- and 3-byte pixels); other spans of 16 pixels or more
-//! as aligned 32-bit words of the repeated pattern, 8 words a step (runs
-//! of `strd` on a Cortex-M4, vector stores on a host), and on cores that
-//! store unaligned words shorter spans of 2-byte pixels as overlapping
-//! words (on a host, overlapping 16-, 8- or 4-byte blocks): see the
-//! README, "Framebuffer formats". The bytes start on a 4-byte boundary.
+//! rows without padding). Packed (1-, 2- and 4-bit) pixels: masked end
+//! bytes and a `memset` of the repeated byte between; byte pixels: a
+//! `memset`. 2- and 4-byte pixels: on a host (x86, x86-64, AArch64)
+//! overlapping 16-byte blocks of the repeated pattern (8- or 4-byte ones
+//! under 16 bytes); on a core that stores unaligned words (Cortex-M3,
+//! M4, M7, M33) a few overlapping words around aligned runs of `strd`;
+//! elsewhere (ARMv6-M, RISC-V) pixel by pixel under 16 pixels (2-byte
+//! ones 4 to 15 as blocks of four halfwords) and aligned 32-bit words, 8
+//! a step, from 16. 3-byte pixels: a `memset` when their
+//! bytes are equal, else the pixel loop (which hosts vectorize) and, from
+//! 16 pixels on the other cores, aligned words of the repeated pattern.
+//! See the README, "Framebuffer formats". The bytes start on a 4-byte
+//! boundary.
 //! [`draw_iter`](DrawTarget::draw_iter) checks each pixel.
 //! Whatever the coordinates and sizes, everything outside the framebuffer
 //! is ignored, without overflow or panic.

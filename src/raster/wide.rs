@@ -641,8 +641,8 @@ pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
     i128::try_from(t.div_ceil(2)).unwrap_or_default()
 }
 
-/// `floor(sqrt(n))`, every square root of the crate: the library's on
-/// 64-bit targets, which divide 64 bits in one instruction; on 32-bit
+/// `floor(sqrt(n))`, every 64-bit square root of the crate (128-bit ones
+/// go through [`isqrt_u128`]): the library's on 64-bit targets, which divide 64 bits in one instruction; on 32-bit
 /// ones [`isqrt_by_steps`], where the library's `u64::isqrt` divides 64
 /// bits in software (and was inlined into each of its callers once it
 /// had few). On x86-64, `isqrt_by_steps` in its place took 39
@@ -686,7 +686,8 @@ fn isqrt_by_steps(n: u64) -> u64 {
 }
 
 /// `floor(sqrt(n))` for `n` in `[2^60, 2^62)`: [`isqrt_62_by_step`] on
-/// 32-bit targets, the library's on 64-bit ones ([`isqrt_u64`]).
+/// 32-bit targets, the library's on 64-bit ones ([`isqrt_u64`]). For
+/// [`OverLength`], whose `n` is already in that range: no scaling.
 #[inline(always)]
 fn isqrt_62(n: u64) -> u64 {
     match cfg!(target_pointer_width = "32") {
