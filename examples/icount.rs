@@ -53,6 +53,7 @@ mod target {
     use embedded_raster::{
         band::DisplayList,
         framebuffer::{buffer_size, Rgb565Le},
+        shade::GouraudTriangle,
         FillRule, Framebuffer, Line, Polygon, Span, SpanDrawable, StyledLine, ThickLine, Triangle,
         TriangleAlgorithm, Vertex,
     };
@@ -192,12 +193,14 @@ mod target {
         Lines(&'a [StyledLine<Rgb565>]),
         ThickLines(&'a [ThickLine<Rgb565>]),
         Polygons(&'a [(&'a [Vertex], FillRule)]),
+        /// Triangles Gouraud-shaded from their colour to [`GOURAUD`]'s.
+        Gouraud(&'a [(Triangle, Rgb565)]),
     }
 
     impl Batch<'_> {
         fn len(self) -> usize {
             match self {
-                Batch::Triangles(ts) | Batch::Variants(_, ts) => ts.len(),
+                Batch::Triangles(ts) | Batch::Variants(_, ts) | Batch::Gouraud(ts) => ts.len(),
                 Batch::Rects(rs) => rs.len(),
                 Batch::Lines(ls) => ls.len(),
                 Batch::ThickLines(ls) => ls.len(),
@@ -218,6 +221,7 @@ mod target {
                     let polygon = Polygon::<12>::new(v).expect("at most 12 vertices");
                     polygon.fill(BLUE).with_rule(rule).draw(target)
                 }),
+                Batch::Gouraud(ts) => ts.iter().try_for_each(|&(t, c)| gouraud(t, c).draw(target)),
             }
         }
 
@@ -236,6 +240,8 @@ mod target {
                     let polygon = Polygon::<12>::new(v).expect("at most 12 vertices");
                     polygon.fill(BLUE).with_rule(rule).draw_spans(fb)
                 }),
+                // No span sink: a shaded span is a `fill_contiguous`.
+                Batch::Gouraud(ts) => ts.iter().try_for_each(|&(t, c)| gouraud(t, c).draw(fb)),
             };
         }
 
@@ -279,6 +285,14 @@ mod target {
 
     const BLUE: Rgb565 = Rgb565::new(0, 40, 31);
 
+    /// The colours of a Gouraud triangle's second and third corners.
+    const GOURAUD: [Rgb565; 2] = [Rgb565::new(31, 8, 0), Rgb565::new(4, 63, 12)];
+
+    /// Triangle `t` shaded from `c` at its first corner to [`GOURAUD`].
+    fn gouraud(t: Triangle, c: Rgb565) -> GouraudTriangle<Rgb565> {
+        t.gouraud([c, GOURAUD[0], GOURAUD[1]])
+    }
+
     /// A draw target that records the rectangles sent to `fill_solid`
     /// (clipped to the screen, split into rows if `rows`), to replay them
     /// as a plain span fill of the same pixels.
@@ -312,6 +326,15 @@ mod target {
             _: I,
         ) -> Result<(), Self::Error> {
             panic!("recorder: a primitive drew single pixels");
+        }
+
+        /// A shaded span: recorded as a fill of its area.
+        fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
+            &mut self,
+            area: &Rectangle,
+            _: I,
+        ) -> Result<(), Self::Error> {
+            self.fill_solid(area, BLUE)
         }
 
         fn fill_solid(&mut self, area: &Rectangle, _: Rgb565) -> Result<(), Self::Error> {
@@ -506,6 +529,23 @@ mod target {
             batch,
             false,
         );
+
+        // Gouraud-shaded triangles (through `draw`: each span one
+        // `fill_contiguous` of its colours), against a flat fill of the
+        // same spans.
+        for (size, count, label) in [(16, 64, "16 px"), (64, 15, "64 px")] {
+            let n = tiles(size, count, &mut ts);
+            let batch = Batch::Gouraud(&ts[..n]);
+            row(
+                &mut counter,
+                FB,
+                RECTS,
+                "Gouraud triangles",
+                label,
+                batch,
+                false,
+            );
+        }
 
         // Every triangle algorithm on the same triangles (issue: speed for
         // accuracy); the exact one again, for ratios within the group.
