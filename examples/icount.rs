@@ -535,16 +535,8 @@ mod target {
         // same spans.
         for (size, count, label) in [(16, 64, "16 px"), (64, 15, "64 px")] {
             let n = tiles(size, count, &mut ts);
-            let batch = Batch::Gouraud(&ts[..n]);
-            row(
-                &mut counter,
-                FB,
-                RECTS,
-                "Gouraud triangles",
-                label,
-                batch,
-                false,
-            );
+            let (batch, group) = (Batch::Gouraud(&ts[..n]), "Gouraud triangles");
+            row(&mut counter, FB, RECTS, group, label, batch, false);
         }
 
         // Every triangle algorithm on the same triangles (issue: speed for

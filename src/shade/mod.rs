@@ -29,7 +29,11 @@
 //!   a_0) L_2) / 2^28) + 2^31`: the value plus the `1/2` of its rounding,
 //!   added once a span;
 //! - per pixel, one add `v += d` per attribute, and the output is `floor(v
-//!   / 2^32)`, the integer part (the value rounded).
+//!   / 2^32)`, the integer part (the value rounded). On 32-bit Arm and
+//!   RISC-V cores a Gouraud span carries its channels' integer parts
+//!   packed into one word, as the colour packs them, and their fractions
+//!   apart: the same adds and the same integer parts, in fewer registers
+//!   (`Packed` in the source).
 //!
 //! # The error bound
 //!
@@ -485,26 +489,39 @@ impl<C: ShadeColor> Iterator for Ramp<C> {
 
 /// How [`Ramp`] carries a span's channel values: packed integer parts
 /// and 32-bit fractions on 32-bit Arm and RISC-V cores ([`Packed`]),
-/// three 64-bit integers elsewhere ([`Wide`]). The same colours either
-/// way (the unit test `packed_channels_step_as_64_bit_values`).
-#[cfg(not(any(target_arch = "arm", target_arch = "riscv32")))]
+/// three 64-bit integers elsewhere and in builds for size ([`Wide`]).
+/// The same colours either way (the unit test
+/// `packed_channels_step_as_64_bit_values`).
+#[cfg(not(all(
+    any(target_arch = "arm", target_arch = "riscv32"),
+    not(optimize_for_size)
+)))]
 type Carried = Wide;
-#[cfg(any(target_arch = "arm", target_arch = "riscv32"))]
+#[cfg(all(
+    any(target_arch = "arm", target_arch = "riscv32"),
+    not(optimize_for_size)
+))]
 type Carried = Packed;
 
 /// A colour's channel values (or their step) in 32.32 fixed point, each
-/// an `i64`, stepped by three 64-bit adds: the form 64-bit targets carry
-/// ([`Carried`]), where [`Packed`] took about twice the time (x86-64,
-/// `cargo bench --bench shading`: Gouraud 240 px 12.7 → 26.2 us, 64 px
-/// 28.6 → 35.8 us; a pixel's carries are a chain the 64-bit adds do not
-/// have).
-#[cfg_attr(any(target_arch = "arm", target_arch = "riscv32"), allow(dead_code))]
+/// an `i64`, stepped by three 64-bit adds: what [`Ramp`] carries on
+/// hosts and in builds for size ([`Carried`]). [`Packed`] took more there:
+/// on x86-64 about twice the time on large triangles (`cargo bench --bench
+/// shading`, Gouraud 240 px 12.7 → 26.2 us: a pixel's carries are a chain
+/// the 64-bit adds do not have); on i686, whose seven registers do not
+/// hold it, 291,000 → 462,000 instructions a 200 px triangle
+/// (callgrind); and at opt-level "s", where the compiler keeps its
+/// per-channel loops as loops and its layout as a table in memory, the
+/// Cortex-M4's 64 px Gouraud triangles (`.ci/icount`) took 1.75x the
+/// instructions.
+// One of `Wide` and `Packed` is unused on each target (`Carried`).
+#[allow(dead_code)]
 #[derive(Debug, Clone, Copy)]
 struct Wide([i64; 3]);
 
-// The signatures of `Packed`'s, which needs the colour's layout.
-#[allow(clippy::extra_unused_type_parameters)]
-#[cfg_attr(any(target_arch = "arm", target_arch = "riscv32"), allow(dead_code))]
+// The signatures of `Packed`'s, which needs the colour's layout; one of
+// the two is unused on each target (`Carried`).
+#[allow(clippy::extra_unused_type_parameters, dead_code)]
 impl Wide {
     /// Values `v` at a lit pixel, with the `1/2` of their rounding.
     #[inline(always)]
@@ -520,13 +537,15 @@ impl Wide {
     /// The colour: each channel's integer part. Then adds `step`.
     #[inline(always)]
     fn color_then_advance<C: ShadeColor>(&mut self, step: &Self) -> C {
-        // In 0..=channel max by the module's bound: the cast is exact.
-        let color = C::from_channels(core::array::from_fn(|c| whole(self.0[c]) as u8));
-        for (v, d) in self.0.iter_mut().zip(step.0) {
+        let mut ch = [0u8; 3];
+        let steps = ch.iter_mut().zip(&mut self.0).zip(&step.0);
+        for ((c, v), d) in steps.take(C::CHANNELS) {
+            // In 0..=channel max by the module's bound: the cast is exact.
+            *c = whole(*v) as u8;
             // |v| < 2^48 + 1 and |d| <= 2^48 (`Linear::new`): no overflow.
-            *v += d;
+            *v += *d;
         }
-        color
+        C::from_channels(ch)
     }
 }
 
@@ -534,7 +553,8 @@ impl Wide {
 /// each value's integer part and fraction (`2^-32` units, its two
 /// halves), with the integer parts packed into one `i32`, each channel in
 /// a field of its own width (`whole = sum_c whole_c << shift_c`,
-/// [`layout`]): the form 32-bit targets carry ([`Carried`]).
+/// [`layout`]): what [`Ramp`] carries on 32-bit Arm and RISC-V cores
+/// ([`Carried`]).
 ///
 /// A step adds the fractions, and adds the packed integer parts of the
 /// step and each fraction's carry at its channel's field: the integer
@@ -547,25 +567,27 @@ impl Wide {
 /// `BinaryColor`), and the compiler folds the unpacking and the colour's
 /// own packing into one mask.
 ///
-/// On a Cortex-M4 (`.ci/itrace`, the 16 px triangle through `draw`) a
-/// pixel took 22 instructions as three `i64`, 5 of them loads of steps
-/// that did not fit the registers, and takes 17: three adds for the
-/// fractions, with each carry folded into the packed value by an add
-/// with carry or a conditional add.
-#[cfg_attr(
-    not(any(target_arch = "arm", target_arch = "riscv32")),
-    allow(dead_code)
-)]
+/// On a Cortex-M4 a pixel took 22 instructions as three `i64`, 5 of them
+/// loads of steps that did not fit the registers, and takes 17: three
+/// adds for the fractions, each carry folded into the packed value by an
+/// add with carry or a conditional add, and one halfword store of the
+/// packed value itself (the `Rgb565` colour). Gouraud triangles through
+/// `draw` (`.ci/icount`), 16 px and 64 px: Cortex-M4 10,903 → 10,278
+/// and 59,172 → 50,651 instructions each, ARMv6-M 29,023 → 28,219 and
+/// 132,323 → 123,570, RISC-V 14,746 → 14,106 and 78,760 → 72,488. The
+/// flash of a firmware that shades (`.ci/codesize_shading`, opt-level 3)
+/// grew 1.5 KB (Cortex-M4 27,088 → 28,612 bytes); builds for size keep
+/// [`Wide`], and their size.
+// One of `Wide` and `Packed` is unused on each target (`Carried`).
+#[allow(dead_code)]
 #[derive(Debug, Clone, Copy)]
 struct Packed {
     whole: i32,
     fraction: [u32; 3],
 }
 
-#[cfg_attr(
-    not(any(target_arch = "arm", target_arch = "riscv32")),
-    allow(dead_code)
-)]
+// One of `Wide` and `Packed` is unused on each target (`Carried`).
+#[allow(dead_code)]
 impl Packed {
     /// Values `v` at a lit pixel, with the `1/2` of their rounding: each
     /// integer part in `0..=MAX` (module docs), below `2^8`.
@@ -1146,7 +1168,7 @@ mod tests {
             }
             pixels
         }
-        let mut random = xorshift(0x5EED_0F_C0_10_55);
+        let mut random = xorshift(0x5EED_0FC0_1055);
         let pixels = check::<Rgb565>(&mut random)
             + check::<Rgb888>(&mut random)
             + check::<Gray8>(&mut random)
