@@ -29,11 +29,11 @@
 //!   a_0) L_2) / 2^28) + 2^31`: the value plus the `1/2` of its rounding,
 //!   added once a span;
 //! - per pixel, one add `v += d` per attribute, and the output is `floor(v
-//!   / 2^32)`, the integer part (the value rounded). On 32-bit Arm and
-//!   RISC-V cores a Gouraud span carries its channels' integer parts
-//!   packed into one word, as the colour packs them, and their fractions
-//!   apart: the same adds and the same integer parts, in fewer registers
-//!   (`Packed` in the source).
+//!   / 2^32)`, the integer part (the value rounded). On 32-bit targets
+//!   (Cortex-M, RISC-V) a Gouraud span carries its channels' integer
+//!   parts packed into one word, as the colour packs them, and their
+//!   fractions apart: the same adds and the same integer parts, in fewer
+//!   registers (`Packed` in the source).
 //!
 //! # The error bound
 //!
@@ -488,32 +488,24 @@ impl<C: ShadeColor> Iterator for Ramp<C> {
 }
 
 /// How [`Ramp`] carries a span's channel values: packed integer parts
-/// and 32-bit fractions on 32-bit Arm and RISC-V cores ([`Packed`]),
-/// three 64-bit integers elsewhere and in builds for size ([`Wide`]).
-/// The same colours either way (the unit test
+/// and 32-bit fractions on 32-bit targets ([`Packed`]), three 64-bit
+/// integers on 64-bit ones and in builds for size ([`Wide`]). The same
+/// colours either way (the unit test
 /// `packed_channels_step_as_64_bit_values`).
-#[cfg(not(all(
-    any(target_arch = "arm", target_arch = "riscv32"),
-    not(optimize_for_size)
-)))]
+#[cfg(not(all(target_pointer_width = "32", not(optimize_for_size))))]
 type Carried = Wide;
-#[cfg(all(
-    any(target_arch = "arm", target_arch = "riscv32"),
-    not(optimize_for_size)
-))]
+#[cfg(all(target_pointer_width = "32", not(optimize_for_size)))]
 type Carried = Packed;
 
 /// A colour's channel values (or their step) in 32.32 fixed point, each
 /// an `i64`, stepped by three 64-bit adds: what [`Ramp`] carries on
-/// hosts and in builds for size ([`Carried`]). [`Packed`] took more there:
-/// on x86-64 about twice the time on large triangles (`cargo bench --bench
-/// shading`, Gouraud 240 px 12.7 → 26.2 us: a pixel's carries are a chain
-/// the 64-bit adds do not have); on i686, whose seven registers do not
-/// hold it, 291,000 → 462,000 instructions a 200 px triangle
-/// (callgrind); and at opt-level "s", where the compiler keeps its
-/// per-channel loops as loops and its layout as a table in memory, the
-/// Cortex-M4's 64 px Gouraud triangles (`.ci/icount`) took 1.75x the
-/// instructions.
+/// 64-bit targets and in builds for size ([`Carried`]). [`Packed`] took
+/// more there: on x86-64 about twice the time on large triangles (`cargo
+/// bench --bench shading`, Gouraud 240 px 12.7 → 26.2 us: a pixel's
+/// carries are a chain the 64-bit adds do not have), and at opt-level
+/// "s", where the compiler keeps its per-channel loops as loops and its
+/// layout as a table in memory, the Cortex-M4's 64 px Gouraud triangles
+/// (`.ci/icount`) took 1.75x the instructions.
 // One of `Wide` and `Packed` is unused on each target (`Carried`).
 #[allow(dead_code)]
 #[derive(Debug, Clone, Copy)]
@@ -553,8 +545,7 @@ impl Wide {
 /// each value's integer part and fraction (`2^-32` units, its two
 /// halves), with the integer parts packed into one `i32`, each channel in
 /// a field of its own width (`whole = sum_c whole_c << shift_c`,
-/// [`layout`]): what [`Ramp`] carries on 32-bit Arm and RISC-V cores
-/// ([`Carried`]).
+/// [`layout`]): what [`Ramp`] carries on 32-bit targets ([`Carried`]).
 ///
 /// A step adds the fractions, and adds the packed integer parts of the
 /// step and each fraction's carry at its channel's field: the integer
@@ -577,7 +568,11 @@ impl Wide {
 /// 132,323 → 123,570, RISC-V 14,746 → 14,106 and 78,760 → 72,488. The
 /// flash of a firmware that shades (`.ci/codesize_shading`, opt-level 3)
 /// grew 1.5 KB (Cortex-M4 27,088 → 28,612 bytes); builds for size keep
-/// [`Wide`], and their size.
+/// [`Wide`], and their size. On i686, whose seven registers do not hold
+/// it, long spans cost more (callgrind, instructions a Gouraud triangle
+/// against [`Wide`]: 16 px 14,125 → 12,657, 64 px 62,738 → 63,670, 200
+/// px 290,944 → 421,627); it is kept there all the same, as the 32-bit
+/// host whose tests run the 32-bit cores' code.
 // One of `Wide` and `Packed` is unused on each target (`Carried`).
 #[allow(dead_code)]
 #[derive(Debug, Clone, Copy)]
