@@ -33,7 +33,7 @@
 //!   (Cortex-M, RISC-V) a Gouraud span carries its channels' integer
 //!   parts packed into one word, as the colour packs them, and their
 //!   fractions apart: the same adds and the same integer parts, in fewer
-//!   registers (`Packed` in the source).
+//!   registers (`PackedChannels` in the source).
 //!
 //! # The error bound
 //!
@@ -488,33 +488,34 @@ impl<C: ShadeColor> Iterator for Ramp<C> {
 }
 
 /// How [`Ramp`] carries a span's channel values: packed integer parts
-/// and 32-bit fractions on 32-bit targets ([`Packed`]), three 64-bit
-/// integers on 64-bit ones and in builds for size ([`Wide`]). The same
+/// and 32-bit fractions on 32-bit targets ([`PackedChannels`]), three 64-bit
+/// integers on 64-bit ones and in builds for size ([`Channels64`]). The same
 /// colours either way (the unit test
 /// `packed_channels_step_as_64_bit_values`).
 #[cfg(not(all(target_pointer_width = "32", not(optimize_for_size))))]
-type Carried = Wide;
+type Carried = Channels64;
 #[cfg(all(target_pointer_width = "32", not(optimize_for_size)))]
-type Carried = Packed;
+type Carried = PackedChannels;
 
-/// A colour's channel values (or their step) in 32.32 fixed point, each
-/// an `i64`, stepped by three 64-bit adds: what [`Ramp`] carries on
-/// 64-bit targets and in builds for size ([`Carried`]). [`Packed`] took
-/// more there: on x86-64 about twice the time on large triangles (`cargo
-/// bench --bench shading`, Gouraud 240 px 12.7 → 26.2 us: a pixel's
-/// carries are a chain the 64-bit adds do not have), and at opt-level
-/// "s", where the compiler keeps its per-channel loops as loops and its
-/// layout as a table in memory, the Cortex-M4's 64 px Gouraud triangles
-/// (`.ci/icount`) took 1.75x the instructions.
-// One of `Wide` and `Packed` is unused on each target (`Carried`).
+/// A colour's channel values (or their step) in 32.32 fixed point, each an
+/// `i64`, stepped by three 64-bit adds: what [`Ramp`] carries on 64-bit
+/// targets and in builds for size ([`Carried`]). [`PackedChannels`] took more
+/// there: on x86-64 about twice the time on large triangles (`cargo bench
+/// --bench shading`, Gouraud 240 px 12.7 → 26.2 us: a pixel's carries are a
+/// chain the 64-bit adds do not have), and at opt-level "s", where the
+/// compiler keeps its per-channel loops as loops and its layout as a table in
+/// memory, the Cortex-M4's 64 px Gouraud triangles (`.ci/icount`) took 1.75x
+/// the instructions.
+// One of `Channels64` and `PackedChannels` is unused on each target
+// (`Carried`).
 #[allow(dead_code)]
 #[derive(Debug, Clone, Copy)]
-struct Wide([i64; 3]);
+struct Channels64([i64; 3]);
 
-// The signatures of `Packed`'s, which needs the colour's layout; one of
-// the two is unused on each target (`Carried`).
+// The signatures of `PackedChannels`'s, which needs the colour's layout; one
+// of the two is unused on each target (`Carried`).
 #[allow(clippy::extra_unused_type_parameters, dead_code)]
-impl Wide {
+impl Channels64 {
     /// Values `v` at a lit pixel, with the `1/2` of their rounding.
     #[inline(always)]
     fn value<C: ShadeColor>(v: [i64; 3]) -> Self {
@@ -568,22 +569,24 @@ impl Wide {
 /// 132,323 → 123,570, RISC-V 14,746 → 14,106 and 78,760 → 72,488. The
 /// flash of a firmware that shades (`.ci/codesize_shading`, opt-level 3)
 /// grew 1.5 KB (Cortex-M4 27,088 → 28,612 bytes); builds for size keep
-/// [`Wide`], and their size. On i686, whose seven registers do not hold
+/// [`Channels64`], and their size. On i686, whose seven registers do not hold
 /// it, long spans cost more (callgrind, instructions a Gouraud triangle
-/// against [`Wide`]: 16 px 14,125 → 12,657, 64 px 62,738 → 63,670, 200
+/// against [`Channels64`]: 16 px 14,125 → 12,657, 64 px 62,738 → 63,670, 200
 /// px 290,944 → 421,627); it is kept there all the same, as the 32-bit
 /// host whose tests run the 32-bit cores' code.
-// One of `Wide` and `Packed` is unused on each target (`Carried`).
+// One of `Channels64` and `PackedChannels` is unused on each target
+// (`Carried`).
 #[allow(dead_code)]
 #[derive(Debug, Clone, Copy)]
-struct Packed {
+struct PackedChannels {
     whole: i32,
     fraction: [u32; 3],
 }
 
-// One of `Wide` and `Packed` is unused on each target (`Carried`).
+// One of `Channels64` and `PackedChannels` is unused on each target
+// (`Carried`).
 #[allow(dead_code)]
-impl Packed {
+impl PackedChannels {
     /// Values `v` at a lit pixel, with the `1/2` of their rounding: each
     /// integer part in `0..=MAX` (module docs), below `2^8`.
     #[inline(always)]
@@ -650,8 +653,8 @@ impl Packed {
 }
 
 /// Where each channel of a colour with channel maxima `max` lies in
-/// [`Packed`]'s integer parts: its shift, and the mask of its field (as
-/// wide as its largest value), the first channel in the highest bits; 24
+/// [`PackedChannels`]'s integer parts: its shift, and the mask of its field
+/// (as wide as its largest value), the first channel in the highest bits; 24
 /// bits at most.
 const fn layout(max: [u8; 3]) -> ([u32; 3], [i32; 3]) {
     let width = [
@@ -868,10 +871,9 @@ mod tests {
 
     use embedded_graphics_core::{
         geometry::{Point, Size},
+        pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888},
         primitives::Rectangle,
     };
-
-    use embedded_graphics_core::pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888};
 
     use super::*;
     use crate::{raster::xorshift, vertex::Vertex};
@@ -1127,13 +1129,13 @@ mod tests {
         );
     }
 
-    /// [`Packed`] against [`Wide`], the 64-bit adds it stands for, in
-    /// every built-in colour: spans of 1 to 600 pixels between two random
-    /// 32.32 values in each channel's `0..=MAX` (rising, falling or flat,
-    /// so that the fractions carry at every pixel, at none, or between),
-    /// stepped pixel by pixel and once past the last, the colours compared
-    /// at every pixel. One-pixel spans take steps of up to `2^48`, which
-    /// [`Packed`] takes as 0: their one pixel is the same.
+    /// [`PackedChannels`] against [`Channels64`], the 64-bit adds it stands
+    /// for, in every built-in colour: spans of 1 to 600 pixels between two
+    /// random 32.32 values in each channel's `0..=MAX` (rising, falling or
+    /// flat, so that the fractions carry at every pixel, at none, or between),
+    /// stepped pixel by pixel and once past the last, the colours compared at
+    /// every pixel. One-pixel spans take steps of up to `2^48`, which
+    /// [`PackedChannels`] takes as 0: their one pixel is the same.
     #[test]
     fn packed_channels_step_as_64_bit_values() {
         fn check<C: ShadeColor + core::fmt::Debug>(random: &mut impl Iterator<Item = u64>) -> u64 {
@@ -1152,8 +1154,10 @@ mod tests {
                         _ => (b - a) / (n - 1),
                     };
                 }
-                let (mut wide, mut packed) = (Wide::value::<C>(v), Packed::value::<C>(v));
-                let (wide_step, packed_step) = (Wide::step::<C>(d), Packed::step::<C>(d));
+                let (mut wide, mut packed) =
+                    (Channels64::value::<C>(v), PackedChannels::value::<C>(v));
+                let (wide_step, packed_step) =
+                    (Channels64::step::<C>(d), PackedChannels::step::<C>(d));
                 for k in 0..n {
                     let want: C = wide.color_then_advance(&wide_step);
                     let got: C = packed.color_then_advance(&packed_step);
