@@ -1131,22 +1131,36 @@ mod tests {
 
     /// [`PackedChannels`] against [`Channels64`], the 64-bit adds it stands
     /// for, in every built-in colour: spans of 1 to 600 pixels between two
-    /// random 32.32 values in each channel's `0..=MAX` (rising, falling or
-    /// flat, so that the fractions carry at every pixel, at none, or between),
-    /// stepped pixel by pixel and once past the last, the colours compared at
-    /// every pixel. One-pixel spans take steps of up to `2^48`, which
-    /// [`PackedChannels`] takes as 0: their one pixel is the same.
+    /// random values as a span carries them (an exact value in each
+    /// channel's `0..=MAX`, in 32.32, plus the `1/2` of its rounding),
+    /// rising, falling or flat, so that the fractions carry at every pixel,
+    /// at none, or between; the first spans two pixels from one end of the
+    /// range to the other, the steepest steps. Stepped pixel by pixel and
+    /// once past the last, the colours compared at every pixel. One-pixel
+    /// spans take steps of up to `2^48`, which [`PackedChannels`] takes as
+    /// 0: their one pixel is the same.
     #[test]
     fn packed_channels_step_as_64_bit_values() {
         fn check<C: ShadeColor + core::fmt::Debug>(random: &mut impl Iterator<Item = u64>) -> u64 {
             let mut next = || random.next().unwrap_or_default();
             let mut pixels = 0;
-            for _ in 0..4_000 {
-                let n = 1 + (next() % 600) as i64;
+            for k in 0..4_000 {
+                // The first spans are two pixels from one end of each
+                // channel's range to the other: the steepest steps.
+                let n = match k {
+                    0..4 => 2,
+                    _ => 1 + (next() % 600) as i64,
+                };
                 let (mut v, mut d) = ([0i64; 3], [0i64; 3]);
                 for c in 0..C::CHANNELS {
-                    let top = (u64::from(C::MAX[c]) + 1) << 32;
-                    let (a, b) = ((next() % top) as i64, (next() % top) as i64);
+                    // A carried value: an exact one in 0..=MAX, plus the
+                    // 1/2 of its rounding (`Linear::at`).
+                    let max = i64::from(C::MAX[c]) << 32;
+                    let mut value = || match k {
+                        0..4 => max * (next() % 2) as i64 + (1 << 31),
+                        _ => (next() % (max as u64 + 1)) as i64 + (1 << 31),
+                    };
+                    let (a, b) = (value(), value());
                     v[c] = a;
                     // Truncated: every value of the span lies between a and b.
                     d[c] = match n {
