@@ -642,11 +642,12 @@ pub(crate) fn div_sqrt(a: u128, len2: u128) -> i128 {
 }
 
 /// `floor(sqrt(n))`, every 64-bit square root of the crate (128-bit ones
-/// go through [`isqrt_u128`]): the library's on 64-bit targets, which divide 64 bits in one instruction; on 32-bit
-/// ones [`isqrt_by_steps`], where the library's `u64::isqrt` divides 64
-/// bits in software (and was inlined into each of its callers once it
-/// had few). On x86-64, `isqrt_by_steps` in its place took 39
-/// instructions more a thick line (callgrind).
+/// go through [`isqrt_u128`]): the library's on 64-bit targets, which
+/// divide 64 bits in one instruction; on 32-bit ones [`isqrt_by_steps`],
+/// where the library's `u64::isqrt` divides 64 bits in software (and was
+/// inlined into each of its callers once it had few). On x86-64,
+/// `isqrt_by_steps` in its place took 39 instructions more a thick line
+/// (callgrind).
 #[inline]
 pub(crate) fn isqrt_u64(n: u64) -> u64 {
     match cfg!(target_pointer_width = "32") {

@@ -500,9 +500,11 @@ type Carried = PackedChannels;
 /// A colour's channel values (or their step) in 32.32 fixed point, each an
 /// `i64`, stepped by three 64-bit adds: what [`Ramp`] carries on 64-bit
 /// targets and in builds for size ([`Carried`]). [`PackedChannels`] took more
-/// there: on x86-64 about twice the time on large triangles (`cargo bench
-/// --bench shading`, Gouraud 240 px 12.7 → 26.2 us: a pixel's carries are a
-/// chain the 64-bit adds do not have), and at opt-level "s", where the
+/// there: on x86-64, 1.6x the instructions on large random triangles
+/// (callgrind, a 200 px Gouraud triangle 196,787 → 311,771; 16 px ones,
+/// mostly span starts, 7,984 → 7,336) and up to twice the time (`cargo
+/// bench --bench shading`, 240 px 12.7 → 26.2 us, on a loaded machine),
+/// and at opt-level "s", where the
 /// compiler keeps its per-channel loops as loops and its layout as a table in
 /// memory, the Cortex-M4's 64 px Gouraud triangles (`.ci/icount`) took 1.75x
 /// the instructions.
