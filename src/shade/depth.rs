@@ -9,7 +9,9 @@ use embedded_graphics_core::{
     Drawable,
 };
 
-use super::{shaded_spans, whole, Frame, GouraudSetup, GouraudTriangle, Linear, ShadeColor};
+use super::{
+    shaded_spans, whole, Frame, GouraudSetup, GouraudTriangle, Linear, ShadeColor, SpanStarts,
+};
 use crate::{clip::Bounds, span::Span, triangle::FilledTriangle};
 
 /// The depth a cleared [`DepthBuffer`] holds: farther than anything drawn
@@ -137,7 +139,7 @@ impl<'a> DepthBuffer<'a> {
     }
 
     /// Depth-tests the pixels of `span` (inside the buffer) whose 32.32
-    /// depth, plus the `1/2` of its rounding (`Linear::at`), starts at `z`
+    /// depth, plus the `1/2` of its rounding (`SpanStarts::at`), starts at `z`
     /// and steps by `dz`, storing the passing ones, and
     /// calls `run(offset, len)` for each run of passing pixels. `|z| < 2^49`
     /// and `|dz| <= 2^48` (module `shade`: `Linear::new` stores larger steps
@@ -301,9 +303,9 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, FilledTriangle<C>> {
         };
         let z = depth_setup(&frame, self.z);
         let color = self.shaded.color;
-        let mut lambdas = frame.span_lambdas();
+        let mut starts = SpanStarts::new(&frame, &z);
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
-            let [z0] = z.at(lambdas.at(span.x_start, span.y));
+            let [z0] = starts.at(span.x_start, span.y);
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
                 let run = Span {
                     y: span.y,
@@ -332,17 +334,18 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, GouraudTriangle<C>> {
         };
         let frame = setup.frame;
         let z = depth_setup(&frame, self.z);
-        let mut lambdas = frame.span_lambdas();
+        let mut z_starts = SpanStarts::new(&frame, &z);
+        let mut starts = SpanStarts::new(&frame, &setup.linear);
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
-            let l = lambdas.at(span.x_start, span.y);
-            let [z0] = z.at(l);
+            let [z0] = z_starts.at(span.x_start, span.y);
+            let start = starts.at(span.x_start, span.y);
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
                 let run = Span {
                     y: span.y,
                     x_start: span.x_start + offset as i32,
                     x_end: span.x_start + (offset + len) as i32,
                 };
-                target.fill_contiguous(&run.rect(), setup.ramp(l, offset, len))
+                target.fill_contiguous(&run.rect(), setup.ramp(start, offset, len))
             })
         })
     }

@@ -83,7 +83,7 @@ use crate::{
 };
 
 /// `1/2` in 32.32 fixed point, for rounding: added to a span's start
-/// values ([`Linear::at`]).
+/// values ([`SpanStarts::at`]).
 const HALF: i64 = 1 << 31;
 
 /// The barycentric frame of a triangle: its raw vertices and doubled signed
@@ -121,187 +121,45 @@ impl Frame {
         self.divisor.floor_div_rem(t).map(|(q, _)| q)
     }
 
-    /// `L_1, L_2` at the first pixels of the triangle's spans, one span
-    /// after another ([`SpanLambdas`]).
-    pub(crate) fn span_lambdas(&self) -> SpanLambdas<'_> {
-        // m = 2 |D| in 64 bits when below 2^63 (SpanLambdas' doc).
-        let m = u64::try_from(2 * self.area2.unsigned_abs())
-            .ok()
-            .filter(|&m| m < 1 << 63);
-        SpanLambdas {
-            frame: self,
-            m,
-            last: None,
-            t: [Divided::default(); 2],
-            steps: Steps::Unset,
-        }
-    }
-}
-
-/// How many columns a span's first pixel may lie from the one of the
-/// span a row above for its `L_k` to be stepped to from there, a column at
-/// a time; farther, they are divided for.
-const STEPPED_COLUMNS: u32 = 8;
-
-/// `L_1, L_2`, the barycentric coordinates of vertices 1 and 2 in 2.60
-/// fixed point, rounded (module docs), at the first pixel of each span,
-/// for spans given top to bottom: found by division for a triangle's
-/// first span, then stepped exactly from one span's first pixel to the
-/// next one's, a row down and a few columns across, with no division.
-///
-/// With `s` the sign of the doubled area `D`, `L_k` is `floor(T_k / m)`
-/// for `T_k = s 2^61 w_k + |D|` and `m = 2 |D|` (`n / d = 2^60 w_k / D`
-/// rounded as `floor((2 n + d) / 2 d)`). `T_k` is affine in the pixel: a
-/// column right adds `s 2^61 4096 (y_(k+1) - y_(k+2))`, a row down `s
-/// 2^61 4096 (x_(k+2) - x_(k+1))`. Kept as `q m + r` with `0 <= r < m`,
-/// and each step divided once by `m` the same way, a step is an add of
-/// quotients, an add of remainders and one carry: `q` is exactly `L_k`.
-///
-/// In 64 bits, checked: `q` in `i64`, `r` in `u64`. The sizes are the
-/// triangle's own: at a span's first pixel `q` lies in `0..=2^60`; a step
-/// by a pixel changes it by about `2^60 / w` for a triangle `w` px wide
-/// across that step, so only slivers under a pixel wide have steps past
-/// `2^63` or sums that leave `i64` on the way. Stepping needs `m < 2^63`
-/// (the remainders' sum below `2 m` fits `u64`), which every triangle of
-/// under `2^37` square pixels meets; `|D| < 2^65` in the 20.12 range.
-/// Where a quotient does not fit, or `m` is larger, the span's first
-/// pixel is divided for in `i128` instead: the same values.
-///
-/// A 32-bit core divides 128 bits in software: on a Cortex-M4
-/// `.ci/itrace`'s 16 px triangle, Gouraud-shaded, took 71,845
-/// instructions with two divisions a span (54,418 of them dividing, then
-/// by shifts and subtractions, about 1,600 a division), and 33,714
-/// stepped in `i128`; 19,452 with the division by estimates
-/// (`raster::wide`) and the other changes of that session, 18,878 with
-/// the rounding's `1/2` added once a span, 16,929 with the steps in 64
-/// bits, 12,953 with the divisions by a prepared `Divisor` and the steps
-/// inlined, 12,145 with the divisor's reciprocal by Newton's iteration,
-/// 11,436 with the start values from 32 by 32-bit products, 11,211 with
-/// the pixels' writes zipped with the colours, and 10,894 with
-/// `Frame::new` inlined (no copies of the frame). A change elsewhere can
-/// move it: see `stroke::pieces::first_row_near` (11,385 with that code
-/// in another place).
-#[derive(Debug)]
-pub(crate) struct SpanLambdas<'a> {
-    frame: &'a Frame,
-    /// `m = 2 |D|`, when below `2^63`: else no step is taken.
-    m: Option<u64>,
-    /// The last span's first pixel, and `T_1, T_2` there.
-    last: Option<(i32, i32)>,
-    t: [Divided; 2],
-    /// `T_1, T_2`'s steps a column right and a row down: set up at the
-    /// first step.
-    steps: Steps,
-}
-
-/// The steps of [`SpanLambdas`], set up when first needed.
-#[derive(Debug, Clone, Copy)]
-enum Steps {
-    /// Not set up yet.
-    Unset,
-    /// A column right and a row down, for `T_1` and `T_2`.
-    Set([[Divided; 2]; 2]),
-    /// A step's quotient does not fit `i64`, or `m` is too large: every
-    /// span's first pixel is divided for.
-    None,
-}
-
-impl SpanLambdas<'_> {
-    /// `L_1, L_2` at pixel `(x, y)`, the first pixel of the next span
-    /// (in `0..=2^60` there, so `i64` holds them).
-    pub(crate) fn at(&mut self, x: i32, y: i32) -> [i64; 2] {
-        self.move_to(x, y);
-        self.t.map(|t| t.q)
-    }
-
-    /// Moves to pixel `(x, y)`, by steps from the last span's first pixel
-    /// when it lies a row above and at most [`STEPPED_COLUMNS`] across,
-    /// else by division; `true` if it stepped.
-    fn move_to(&mut self, x: i32, y: i32) -> bool {
-        let near = match self.last {
-            Some((lx, ly)) => ly.checked_add(1) == Some(y) && lx.abs_diff(x) <= STEPPED_COLUMNS,
-            None => false,
-        };
-        let stepped = match near {
-            true => self.step_to(x).is_some(),
-            false => false,
-        };
-        if !stepped {
-            self.divide_at(x, y);
-        }
-        self.last = Some((x, y));
-        stepped
-    }
-
-    /// `T_1, T_2` at `(x, y)`, by division in `i128`. Out of line: with
-    /// the steps in `i128`, all inlined into [`at`](Self::at) and the
-    /// column steps' loop unrolled to its bound, they took 8,848 bytes of
-    /// flash on a Cortex-M4 at opt-level 3. In 64 bits the steps are
-    /// inlined (the 16 px Gouraud triangle of `.ci/itrace` 13,078 →
-    /// 12,953 instructions, 20 bytes less at "s", 32 more at opt-level 3).
+    /// `L_1, L_2` at the centre of pixel `(x, y)`: `round(2^60 w_k / D)`,
+    /// in `0..=2^60` at a lit pixel (saturated to `i64` elsewhere). Two
+    /// `i128` divisions; out of line, as every caller's first span and
+    /// far moves share it.
     #[inline(never)]
-    fn divide_at(&mut self, x: i32, y: i32) {
-        let (m, s) = (2 * self.frame.area2.abs(), self.frame.area2 < 0);
-        let (p, divisor) = (&self.frame.p, &self.frame.divisor);
+    fn lambdas_at(&self, x: i32, y: i32) -> [i64; 2] {
+        let p = &self.p;
         let c = (i64::from(x) * 4096 + 2048, i64::from(y) * 4096 + 2048);
-        for (k, t) in self.t.iter_mut().enumerate() {
-            // (a - c) x (b - c): the orientation of c, a, b.
+        core::array::from_fn(|k| {
+            // w_(k+1) = (a - c) x (b - c): the orientation of c, a, b, below
+            // 2^65 in magnitude at a lit pixel, so that 2^60 w stays inside
+            // `i128` there; saturated for a pixel far outside.
             let w = orientation(c, p[(k + 2) % 3], p[k]);
-            let t_k = match s {
-                true => m / 2 - (w << 61),
-                false => m / 2 + (w << 61),
-            };
-            let (q, r) = divisor.floor_div_rem(t_k).unwrap_or((0, 0));
-            // q is in 0..=2^60 at a span's first pixel; r is below m, and
-            // is only stepped from when m < 2^63.
-            *t = Divided {
-                q: i64::try_from(q).unwrap_or(if q < 0 { i64::MIN } else { i64::MAX }),
-                r: u64::try_from(r).unwrap_or(0),
-            };
-        }
-    }
-
-    /// Steps `T_1, T_2` from the last span's first pixel a row down and to
-    /// column `x`; `None` if the steps do not fit 64 bits (`T_1, T_2` are
-    /// then left part-way, and divided for again). Only the row step can
-    /// leave `i64` on the way to a lit pixel: the column steps then move
-    /// between two values that fit, monotonically.
-    #[inline]
-    fn step_to(&mut self, x: i32) -> Option<()> {
-        let (lx, _) = self.last?;
-        let m = self.m?;
-        if let Steps::Unset = self.steps {
-            self.steps = self.set_up_steps().map_or(Steps::None, Steps::Set);
-        }
-        let Steps::Set([column, row]) = &self.steps else {
-            return None;
-        };
-        for ((t, row), column) in self.t.iter_mut().zip(row).zip(column) {
-            t.add(*row, m)?;
-            let column = match x > lx {
-                true => *column,
-                false => column.negated(m)?,
-            };
-            for _ in 0..x.abs_diff(lx) {
-                t.add(column, m)?;
+            let positive = (w < 0) == (self.area2 < 0);
+            let l = w.checked_mul(1 << 60).and_then(|n| self.round(n));
+            match l.and_then(|l| i64::try_from(l).ok()) {
+                Some(l) => l,
+                None if positive => i64::MAX,
+                None => i64::MIN,
             }
-        }
-        Some(())
+        })
     }
 
-    /// `T_1, T_2`'s steps a column right and a row down, if their
-    /// quotients fit `i64`.
-    fn set_up_steps(&self) -> Option<[[Divided; 2]; 2]> {
-        let s = self.frame.area2 < 0;
-        let (p, divisor) = (&self.frame.p, &self.frame.divisor);
-        // s 2^61 4096 d, below 2^106 (d below 2^33).
+    /// The changes of `L_1, L_2` a column right and a row down, rounded
+    /// (`round(2^60 4096 (y_(k+1) - y_(k+2)) / D)` and `round(2^60 4096
+    /// (x_(k+2) - x_(k+1)) / D)`); `None` unless each is below `2^61` in
+    /// magnitude, a change of 2 (only a triangle narrower than a pixel across a step
+    /// changes them more).
+    fn lambda_steps(&self) -> Option<[[i64; 2]; 2]> {
+        let p = &self.p;
+        // 2^72 d, below 2^105 (d below 2^33).
         let step = |d: i64| {
-            let v = i128::from(d) << 73;
-            Divided::of(if s { -v } else { v }, divisor)
+            self.round(i128::from(d) << 72)
+                .filter(|q| q.unsigned_abs() < 1 << 61)
+                .and_then(|q| i64::try_from(q).ok())
         };
-        let mut steps = [[Divided::default(); 2]; 2];
+        let mut steps = [[0; 2]; 2];
         for k in 0..2 {
-            // w_k = (a - c) x (b - c) with a = p_(k+1), b = p_(k+2).
+            // w_(k+1) = (a - c) x (b - c) with a = p_(k+2), b = p_k.
             let (a, b) = (p[(k + 2) % 3], p[k]);
             steps[0][k] = step(a.1 - b.1)?;
             steps[1][k] = step(b.0 - a.0)?;
@@ -310,54 +168,151 @@ impl SpanLambdas<'_> {
     }
 }
 
-/// A value `q m + r` kept as its floor quotient and remainder by a
-/// divisor `0 < m < 2^63` that the caller keeps: `0 <= r < m`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-struct Divided {
-    q: i64,
-    r: u64,
+/// How many columns a span's first pixel may lie from the one of the
+/// span a row above for its values to be stepped to from there;
+/// farther, they are divided for.
+const STEPPED_COLUMNS: u32 = 8;
+
+/// The values of `N` attributes at the first pixel of each span, for
+/// spans given top to bottom, in 32.32 fixed point with the `1/2` of
+/// their rounding (what [`Ramp`] and the depth test step from): divided
+/// for at a triangle's first span, then stepped from one span's first
+/// pixel to the next one's, a row down and at most [`STEPPED_COLUMNS`]
+/// across, with no division and no product of coordinates.
+///
+/// Each attribute is carried as `2^44 (a(p) - a_0) + 2^11` at the last
+/// span's first pixel `p` (its offset from vertex 0's value, in 20.44
+/// fixed point, with the `1/2` of the rounding to 32.32 folded in): the
+/// value handed out is `2^32 a_0 + 2^31` plus its top 52 bits. A row down
+/// and `dx` columns across adds the attribute's row step plus `dx` times
+/// its column step, each `da_1 s_1 + da_2 s_2` for the steps `s_k` of
+/// `L_k` ([`Frame::lambda_steps`]), rounded to `2^-44`
+/// ([`Linear::offset`]): off by less than `2 * 65535 * 2^-61 + 2^-45 <
+/// 2^-43` a unit step. From a division on, the first pixels of a
+/// triangle's spans go down at most `2^20` rows and, the left side of a
+/// triangle (or its clip) being convex, at most `2^21` columns across
+/// (its box is at most `2^20` px wide), so the carried value is within
+/// `3 * 2^20 * 2^-43 + 2^-43 < 2^-20` of exact; the value handed out,
+/// its floor at `2^-32`, within `2^-20 + 2^-33` (module docs: the error
+/// bound).
+///
+/// Sizes: at a lit pixel the carried value is below `2^60 + 2^24` in
+/// magnitude (`|a(p) - a_0| <= 65535`); steps are taken only when the
+/// row step is within `2^60` and the column step within `2^57`, so a
+/// move adds less than `2^61` and every sum stays below `2^62`.
+///
+/// On a Cortex-M4 this replaced `L_1, L_2` stepped exactly (a quotient and
+/// a remainder each, a row step and up to eight column steps a span) and
+/// the three start values made from them by eight 32 by 32-bit products:
+/// about 230 instructions a span (`.ci/itrace`).
+#[derive(Debug)]
+pub(crate) struct SpanStarts<'a, const N: usize> {
+    frame: &'a Frame,
+    linear: &'a Linear<N>,
+    /// The last span's first pixel.
+    last: Option<(i32, i32)>,
+    /// `2^44 (a(p) - a_0) + 2^11` there.
+    offset: [i64; N],
+    /// The attributes' steps, set up at the first step.
+    steps: Steps<N>,
 }
 
-impl Divided {
-    /// `t` divided by `m`, if the quotient and the remainder fit. One copy
-    /// for the four steps.
-    #[inline(never)]
-    fn of(t: i128, m: &Divisor) -> Option<Self> {
-        let (q, r) = m.floor_div_rem(t)?;
-        Some(Self {
-            q: i64::try_from(q).ok()?,
-            r: u64::try_from(r).ok()?,
-        })
+/// The steps of [`SpanStarts`], set up when first needed.
+#[derive(Debug, Clone, Copy)]
+enum Steps<const N: usize> {
+    /// Not set up yet.
+    Unset,
+    /// A column right and a row down, in 20.44 fixed point.
+    Set { column: [i64; N], row: [i64; N] },
+    /// A step is too large (a sliver): every span's first pixel is divided
+    /// for.
+    None,
+}
+
+impl<'a, const N: usize> SpanStarts<'a, N> {
+    /// The starts of the spans of the triangle `frame` whose attributes
+    /// are `linear`.
+    pub(crate) fn new(frame: &'a Frame, linear: &'a Linear<N>) -> Self {
+        Self {
+            frame,
+            linear,
+            last: None,
+            offset: [0; N],
+            steps: Steps::Unset,
+        }
     }
 
-    /// Adds `step` (divided by the same `m`): the remainders' sum is below
-    /// `2 m < 2^64`, so one carry at most. `None`, leaving the value
-    /// unchanged, if the quotient leaves `i64`.
+    /// The 32.32 values, plus `1/2`, at pixel `(x, y)`: the first pixel of
+    /// the next span, a lit pixel.
     #[inline]
-    fn add(&mut self, step: Self, m: u64) -> Option<()> {
-        let r = self.r + step.r;
-        let (r, carry) = match r >= m {
-            true => (r - m, 1),
-            false => (r, 0),
-        };
-        self.q = self.q.checked_add(step.q)?.checked_add(carry)?;
-        self.r = r;
-        Some(())
+    pub(crate) fn at(&mut self, x: i32, y: i32) -> [i64; N] {
+        self.move_to(x, y);
+        // At a lit pixel the offset's top 52 bits are within 2^-20 of
+        // a(p) - a_0, below 2^16 + 1 units: the sum is far inside `i64`.
+        core::array::from_fn(|n| self.linear.base[n] + (self.offset[n] >> 12))
     }
 
-    /// The value's negative, divided by the same `m`: `-(q m + r) = (-q -
-    /// 1) m + (m - r)` for `r > 0`.
-    fn negated(self, m: u64) -> Option<Self> {
-        Some(match self.r {
-            0 => Self {
-                q: self.q.checked_neg()?,
-                r: 0,
-            },
-            r => Self {
-                q: self.q.checked_neg()?.checked_sub(1)?,
-                r: m - r,
-            },
-        })
+    /// Moves to pixel `(x, y)`, by a step from the last span's first pixel
+    /// when it lies a row above and at most [`STEPPED_COLUMNS`] across,
+    /// else by division; `true` if it stepped.
+    #[inline]
+    fn move_to(&mut self, x: i32, y: i32) -> bool {
+        let dx = match self.last {
+            Some((lx, ly)) if ly.checked_add(1) == Some(y) => x
+                .checked_sub(lx)
+                .filter(|dx| dx.unsigned_abs() <= STEPPED_COLUMNS),
+            _ => None,
+        };
+        let stepped = match dx {
+            Some(dx) => self.step_by(dx),
+            None => false,
+        };
+        if !stepped {
+            self.divide_at(x, y);
+        }
+        self.last = Some((x, y));
+        stepped
+    }
+
+    /// The offsets at `(x, y)` from `L_1, L_2` found by division.
+    #[inline(never)]
+    fn divide_at(&mut self, x: i32, y: i32) {
+        let l = self.frame.lambdas_at(x, y);
+        // Below 2^60 + 2^47 for `l` in `[0, 2^60]` (`Linear::offset`).
+        self.offset = self.linear.offset(l).map(|o| o + (1 << 11));
+    }
+
+    /// Steps a row down and `dx` columns across (`|dx| <=
+    /// STEPPED_COLUMNS`); `false` if the triangle's steps are too large.
+    #[inline]
+    fn step_by(&mut self, dx: i32) -> bool {
+        if let Steps::Unset = self.steps {
+            self.steps = self.set_up_steps();
+        }
+        let Steps::Set { column, row } = &self.steps else {
+            return false;
+        };
+        for ((o, row), column) in self.offset.iter_mut().zip(row).zip(column) {
+            // |o| < 2^60 + 2^24 at the last lit pixel, |row| <= 2^60 and
+            // |dx column| <= 8 2^57 (struct docs): below 2^62.
+            *o += row + i64::from(dx) * column;
+        }
+        true
+    }
+
+    /// The attributes' steps a column right and a row down, if within the
+    /// bounds of the struct's docs.
+    #[inline(never)]
+    fn set_up_steps(&self) -> Steps<N> {
+        let Some([column, row]) = self.frame.lambda_steps() else {
+            return Steps::None;
+        };
+        let (column, row) = (self.linear.offset(column), self.linear.offset(row));
+        let within = |v: &[i64; N], bound: u64| v.iter().all(|v| v.unsigned_abs() <= bound);
+        match within(&column, 1 << 57) && within(&row, 1 << 60) {
+            true => Steps::Set { column, row },
+            false => Steps::None,
+        }
     }
 }
 
@@ -365,10 +320,10 @@ impl Divided {
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Linear<const N: usize> {
     /// `2^32 a_0 + 2^31`: the value at vertex 0 in 32.32, with the `1/2`
-    /// of the rounding ([`at`](Self::at)).
+    /// of the rounding ([`SpanStarts::at`]).
     base: [i64; N],
     /// `a_1 - a_0`, `a_2 - a_0` (values in `0..=65535`): in `i32`, so that
-    /// a span's start multiplies 32 by 32 bits where it can.
+    /// [`offset`](Self::offset) multiplies 32 by 32 bits.
     da: [[i32; N]; 2],
     step: [i64; N],
 }
@@ -406,49 +361,47 @@ impl<const N: usize> Linear<N> {
         Self { base, da, step }
     }
 
-    /// The 32.32 values at the pixel whose barycentric coordinates are `l`
-    /// (a lit pixel: `l` in `[0, 2^60]`), plus `1/2`: `2^32 a_0 +
-    /// floor((da_1 l_1 + da_2 l_2 + 2^27) / 2^28) + 2^31`, so that the
-    /// values stepped from them round by their integer part ([`whole`]).
+    /// `da_1 l_1 + da_2 l_2` for `l` in `2^-60` units, in `2^-44` units
+    /// rounded (halves up): `floor((da_1 l_1 + da_2 l_2 + 2^15) / 2^16)`.
+    /// For a lit pixel's `L_1, L_2` (in `[0, 2^60]`) it is `2^44 (a(p) -
+    /// a_0)` within `2 * 65535 * 2^-61 + 2^-45 < 2^-43` units; for the
+    /// steps of `L_1, L_2` (`|l| < 2^61`) the step of `2^44 a`.
     ///
-    /// In `i64`, with each `l = 2^30 h + b` (`0 <= b < 2^30`, and `0 <= h
-    /// <= 2^30` for `l` in `[0, 2^60]`; for another `l`, `h` is taken
-    /// modulo `2^31`): the products of the `h` are whole multiples of
-    /// `2^28`, so the quotient is `4 (da_1 h_1 + da_2 h_2)` plus that of
-    /// the `b` terms, exactly. Every product is of two `i32` (one
-    /// multiplication on a Cortex-M4) and below `2^47` in magnitude (`|da|
-    /// <= 65535`), `4 (da_1 h_1 + da_2 h_2)` below `2^50`, and the value
-    /// below `2^51`: no overflow for any `l`. On a Cortex-M4 the `i128`
-    /// products took 449 instructions a Gouraud span (`.ci/itrace`), the
-    /// `i64` ones (split at `2^28`) 179 with the span's call.
-    fn at(&self, l: [i64; 2]) -> [i64; N] {
-        // `h` is at most 2^30 for `l` in `[0, 2^60]`, as a lit pixel's
-        // coordinates are, and masked to 31 bits for any other; `b` is
-        // below 2^30: both casts are exact.
+    /// In `i64`, exactly, with each `l = 2^30 h + b` (`0 <= b < 2^30`, and
+    /// `-2^31 <= h < 2^31` for `|l| < 2^61`; for another `l`, `h` is taken as
+    /// 0): the products of the `h` are whole multiples of `2^16`, so the
+    /// quotient is `2^14 (da_1 h_1 + da_2 h_2)` plus that of the `b`
+    /// terms. Every product is of two `i32` (one multiplication on a
+    /// Cortex-M4) and below `2^47` in magnitude (`|da| <= 65535`), `2^14
+    /// (da_1 h_1 + da_2 h_2)` at most `2^62`, and the result below `2^62
+    /// + 2^32`: no overflow for any `l`.
+    fn offset(&self, l: [i64; 2]) -> [i64; N] {
         let split = |l: i64| {
             (
-                ((l >> 30) & i64::from(i32::MAX)) as i32,
+                i32::try_from(l >> 30).unwrap_or(0),
+                // Below 2^30: the cast is exact.
                 (l & ((1 << 30) - 1)) as i32,
             )
         };
         let ((h1, b1), (h2, b2)) = (split(l[0]), split(l[1]));
         // On ARMv6-M a library call each, as they stay: with the 16-bit
         // quarters of `raster::wide::product_u32` in their place, the
-        // Gouraud window of `.ci/itrace` took 507 instructions fewer, but
-        // the compiler then laid out the band loop of `.ci/icount`'s scene
-        // otherwise (bands of 16 rows 1.0 % slower).
+        // Gouraud window of `.ci/itrace` took 507 instructions fewer (when
+        // every span's start took these products), but the compiler then
+        // laid out the band loop of `.ci/icount`'s scene otherwise (bands
+        // of 16 rows 1.0 % slower).
         let product = |a: i32, b: i32| i64::from(a) * i64::from(b);
         core::array::from_fn(|n| {
             let (d1, d2) = (self.da[0][n], self.da[1][n]);
             let high = product(d1, h1) + product(d2, h2);
             let low = product(d1, b1) + product(d2, b2);
-            self.base[n] + 4 * high + ((low + (1 << 27)) >> 28)
+            high * (1 << 14) + ((low + (1 << 15)) >> 16)
         })
     }
 }
 
 /// The integer part of a carried 32.32 value, which holds the `1/2` of
-/// its rounding ([`Linear::at`]): the attribute rounded. Folding the `1/2`
+/// its rounding ([`SpanStarts::at`]): the attribute rounded. Folding the `1/2`
 /// in once a span saved an add with carry per channel and pixel (on a
 /// Cortex-M4, two instructions each). The values carried are below `2^49 +
 /// 2^31` in magnitude (module docs: within `2^-12` of `0..=65535` at lit
@@ -698,9 +651,9 @@ impl<C: ShadeColor> GouraudSetup<C> {
     }
 
     /// The colours of `len` pixels starting `offset` pixels into a span
-    /// whose first pixel has barycentric coordinates `l`.
-    fn ramp(&self, l: [i64; 2], offset: u32, len: u32) -> Ramp<C> {
-        let mut v = self.linear.at(l);
+    /// whose first pixel has the values `start` ([`SpanStarts::at`]).
+    fn ramp(&self, start: [i64; 3], offset: u32, len: u32) -> Ramp<C> {
+        let mut v = start;
         let d = self.linear.step;
         for k in 0..3 {
             // Exactly the value `offset` single steps would reach. An
@@ -825,10 +778,10 @@ impl<C: ShadeColor> GouraudTriangle<C> {
         let Some(setup) = GouraudSetup::new(self) else {
             return Ok(());
         };
-        let mut lambdas = setup.frame.span_lambdas();
+        let mut starts = SpanStarts::new(&setup.frame, &setup.linear);
         shaded_spans(&self.triangle, clip, &mut |span| {
-            let l = lambdas.at(span.x_start, span.y);
-            f(span, &mut setup.ramp(l, 0, span.len()))
+            let start = starts.at(span.x_start, span.y);
+            f(span, &mut setup.ramp(start, 0, span.len()))
         })
     }
 }
@@ -859,10 +812,10 @@ impl<C: ShadeColor> Drawable for GouraudTriangle<C> {
             return Ok(());
         };
         let clip = target.bounding_box();
-        let mut lambdas = setup.frame.span_lambdas();
+        let mut starts = SpanStarts::new(&setup.frame, &setup.linear);
         shaded_spans(&self.triangle, &clip, &mut |span| {
-            let l = lambdas.at(span.x_start, span.y);
-            target.fill_contiguous(&span.rect(), setup.ramp(l, 0, span.len()))
+            let start = starts.at(span.x_start, span.y);
+            target.fill_contiguous(&span.rect(), setup.ramp(start, 0, span.len()))
         })
     }
 }
@@ -904,22 +857,22 @@ mod tests {
         ]
     }
 
-    /// The start values in `i64` against their definition in `i128`, for
-    /// values across `0..=65535` and coordinates across `0..=2^60`, the
-    /// ends, the `2^30` boundaries of the split and the `2^28` ones of the
-    /// rounding among them.
+    /// [`Linear::offset`] against its definition in `i128`, for values
+    /// across `0..=65535` and coordinates across `-2^61 < l < 2^61` (a
+    /// lit pixel's and the steps'), the ends, the `2^30` boundaries of the
+    /// split and the `2^16` ones of the rounding among them.
     #[test]
-    fn start_values_split_exactly() {
+    fn offsets_split_exactly() {
         let mut random = xorshift(0x5EED_0F5A_1157_A2B3);
         let mut next = move || random.next().unwrap_or_default();
         let ends = [
             0i64,
             1,
-            (1 << 27) - 1,
-            1 << 27,
-            (1 << 28) - 1,
-            1 << 28,
-            (1 << 28) + 1,
+            (1 << 15) - 1,
+            1 << 15,
+            (1 << 16) - 1,
+            1 << 16,
+            (1 << 16) + 1,
             (1 << 30) - 1,
             1 << 30,
             (1 << 30) + 1,
@@ -927,207 +880,200 @@ mod tests {
             1 << 31,
             (1 << 60) - 1,
             1 << 60,
+            (1 << 61) - 1,
         ];
         for case in 0..100_000 {
             let a = [0; 3].map(|_| (next() % 65536) as i64);
-            let mut coordinate = || match case % 3 {
-                0 => ends[(next() % ends.len() as u64) as usize],
-                _ => (next() % ((1 << 60) + 1)) as i64,
+            let mut coordinate = || {
+                let l = match case % 3 {
+                    0 => ends[(next() % ends.len() as u64) as usize],
+                    _ => (next() % (1 << 61)) as i64,
+                };
+                if next() % 2 == 0 {
+                    -l
+                } else {
+                    l
+                }
             };
             let l = [coordinate(), coordinate()];
             let linear = Linear::<1> {
-                base: [(a[0] << 32) + (1 << 31)],
+                base: [0],
                 da: [[(a[1] - a[0]) as i32], [(a[2] - a[0]) as i32]],
                 step: [0],
             };
             let wide = |v: i64| i128::from(v);
-            let exact = (wide(a[0]) << 32)
-                + ((wide(a[1] - a[0]) * wide(l[0]) + wide(a[2] - a[0]) * wide(l[1]) + (1 << 27))
-                    >> 28)
-                + (1 << 31);
-            assert_eq!(i128::from(linear.at(l)[0]), exact, "{a:?} {l:?}");
+            let exact =
+                (wide(a[1] - a[0]) * wide(l[0]) + wide(a[2] - a[0]) * wide(l[1]) + (1 << 15)) >> 16;
+            assert_eq!(i128::from(linear.offset(l)[0]), exact, "{a:?} {l:?}");
         }
     }
 
-    /// Adding and subtracting divided values against dividing their sum
-    /// and difference (the host's own division), for every small value,
-    /// step and divisor: the carry and the borrow at exactly `m` and 0 as
-    /// well as past them.
-    #[test]
-    fn divided_steps_carry_and_borrow_exactly() {
-        let divided = |t: i64, m: i64| Divided {
-            q: t.div_euclid(m),
-            r: t.rem_euclid(m) as u64,
+    /// Random triangles with corners from 1 px to `2^(1 + scale)` px
+    /// around a centre (clamped to the 20.12 range), one in four a sliver
+    /// (the third corner near the others' line).
+    fn random_triangle(next: &mut impl FnMut() -> u64, scale: u32, sliver: bool) -> Triangle {
+        let centre = ((next() % 200) as i32 * 4096, (next() % 200) as i32 * 4096);
+        let mut corner = || {
+            let span = 1i64 << (12 + scale);
+            let offset = |r: u64| (r % (2 * span as u64 + 1)) as i64 - span;
+            let x = i64::from(centre.0) + offset(next());
+            let y = i64::from(centre.1) + offset(next());
+            // Within the 20.12 range.
+            let c = |v: i64| v.clamp(i32::MIN.into(), i32::MAX.into()) as i32;
+            Vertex::from_raw(c(x), c(y))
         };
-        for m in 1..12 {
-            for t in -40..40 {
-                let divisor = Divisor::new(NonZeroU128::new(m as u128).unwrap());
-                assert_eq!(Divided::of(t.into(), &divisor), Some(divided(t, m)));
-                for step in -40..40 {
-                    let mut sum = divided(t, m);
-                    assert_eq!(sum.add(divided(step, m), m as u64), Some(()));
-                    assert_eq!(sum, divided(t + step, m), "{t} + {step} by {m}");
-                    let mut difference = divided(t, m);
-                    let negated = divided(step, m).negated(m as u64).unwrap();
-                    assert_eq!(difference.add(negated, m as u64), Some(()));
-                    assert_eq!(difference, divided(t - step, m), "{t} - {step} by {m}");
+        let (a, b) = (corner(), corner());
+        let c = match sliver {
+            true => {
+                let (a, b) = (a.raw(), b.raw());
+                let jitter = (next() % 65) as i64 - 32;
+                let mid = |u: i32, v: i32, j: i64| {
+                    let m = (i64::from(u) + i64::from(v)) / 2 + j;
+                    m.clamp(i32::MIN.into(), i32::MAX.into()) as i32
+                };
+                Vertex::from_raw(mid(a.0, b.0, jitter), mid(a.1, b.1, -jitter))
+            }
+            false => corner(),
+        };
+        Triangle::new(a, b, c)
+    }
+
+    /// [`Frame::lambdas_at`] and [`Frame::lambda_steps`] against their
+    /// definitions ([`reference`], and the difference of the weights a
+    /// pixel apart divided by the host's own division), on random
+    /// triangles of every size and slivers.
+    #[test]
+    fn lambdas_and_their_steps_match_their_definitions() {
+        let mut random = xorshift(0x1A3B_DA55_7E95_2026);
+        let mut next = move || random.next().unwrap_or_default();
+        let (mut steps, mut refused) = (0, 0);
+        for case in 0..20_000 {
+            let scale = (next() % 21) as u32;
+            let t = random_triangle(&mut next, scale, case % 4 == 0);
+            let Some(frame) = Frame::new(&t) else {
+                continue;
+            };
+            let (x, y) = ((next() % 300) as i32 - 50, (next() % 300) as i32 - 50);
+            let here = reference(&t, x, y);
+            let fit = |v: i128| v.clamp(i64::MIN.into(), i64::MAX.into()) as i64;
+            assert_eq!(frame.lambdas_at(x, y), here.map(fit), "{t:?} at ({x}, {y})");
+            // The steps: 2^60 times the weights' change a pixel across or
+            // down, over D, rounded (halves up).
+            let p = t.vertices.map(|v| {
+                let (x, y) = v.raw();
+                (i128::from(x), i128::from(y))
+            });
+            let d = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[1].1 - p[0].1) * (p[2].0 - p[0].0);
+            let round = |n: i128| {
+                let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
+                (2 * n + d).div_euclid(2 * d)
+            };
+            // Weight of vertex k + 1: the edge from p_(k+2) to p_k.
+            let exact: [[i128; 2]; 2] = [
+                [0, 1].map(|k: usize| round((p[(k + 2) % 3].1 - p[k].1) << 72)),
+                [0, 1].map(|k: usize| round((p[k].0 - p[(k + 2) % 3].0) << 72)),
+            ];
+            let within = exact.iter().flatten().all(|s| s.unsigned_abs() < 1 << 61);
+            match frame.lambda_steps() {
+                Some(s) => {
+                    assert!(within, "{t:?}");
+                    assert_eq!(s.map(|s| s.map(i128::from)), exact, "{t:?}");
+                    steps += 1;
                 }
-            }
-        }
-        // At the ends of i64: a quotient that would leave it is refused,
-        // and the value is left as it was; the largest remainders carry.
-        let m = (1u64 << 63) - 1;
-        let top = Divided {
-            q: i64::MAX,
-            r: m - 1,
-        };
-        let mut v = top;
-        assert_eq!(v.add(Divided { q: 0, r: 1 }, m), None);
-        assert_eq!(v, top);
-        let mut v = top;
-        assert_eq!(v.add(Divided { q: -1, r: m - 1 }, m), Some(()));
-        assert_eq!(
-            v,
-            Divided {
-                q: i64::MAX,
-                r: m - 2
-            }
-        );
-        let bottom = Divided { q: i64::MIN, r: 0 };
-        assert_eq!(bottom.negated(m), None);
-        let three = Divisor::new(NonZeroU128::new(3).unwrap());
-        assert_eq!(Divided::of(i128::from(i64::MAX) * 3 + 3, &three), None);
-        assert_eq!(
-            Divided::of(i128::from(i64::MIN) * 3, &three),
-            Some(Divided { q: i64::MIN, r: 0 })
-        );
-    }
-
-    /// Steps whose sums leave `i64` on the way, in slivers a fraction of a
-    /// pixel thick: refused part-way, and the pixel divided for instead,
-    /// to the same values. Between any two pixels a row apart and up to
-    /// [`STEPPED_COLUMNS`] across whose `L_k` fit `i64` (lit or not).
-    #[test]
-    fn steps_past_i64_fall_back_to_division() {
-        let (mut refused, mut stepped) = (0, 0);
-        for thickness in [300, 600, 1200, 2400] {
-            for run in [0, 1, 3, 8] {
-                // A sliver from (0, 0) to (run, 8) px, `thickness` raw
-                // units wide across.
-                let end = (run * 4096, 8 * 4096);
-                let t = Triangle::new(
-                    Vertex::from_raw(0, 0),
-                    Vertex::from_raw(end.0, end.1),
-                    Vertex::from_raw(end.0 + thickness, end.1),
-                );
-                let frame = Frame::new(&t).unwrap();
-                let fits = |l: [i128; 2]| l.iter().all(|&v| i64::try_from(v).is_ok());
-                for y in -1..9 {
-                    for x in -9..run + 10 {
-                        let from = reference(&t, x, y);
-                        for dx in -(STEPPED_COLUMNS as i32)..=STEPPED_COLUMNS as i32 {
-                            let to = reference(&t, x + dx, y + 1);
-                            if !fits(from) || !fits(to) {
-                                continue;
-                            }
-                            let mut lambdas = frame.span_lambdas();
-                            lambdas.move_to(x, y);
-                            let moved = lambdas.move_to(x + dx, y + 1);
-                            assert_eq!(lambdas.t.map(|t| i128::from(t.q)), to, "{t:?}");
-                            match (moved, lambdas.steps) {
-                                (true, _) => stepped += 1,
-                                (false, Steps::Set(_)) => refused += 1,
-                                _ => {}
-                            }
-                        }
-                    }
+                None => {
+                    assert!(!within, "{t:?}");
+                    refused += 1;
                 }
             }
         }
         assert!(
-            refused > 0 && stepped > 0,
-            "{refused} refused, {stepped} stepped"
+            steps > 2 * refused && refused > 0,
+            "{steps} set up, {refused} refused"
         );
     }
 
-    /// The stepped `L_k` of every span's first pixel equal the definition's,
-    /// for random triangles with corners from 1 px to 2^20 px around a
-    /// centre (clamped to the 20.12 range, so that the doubled area and
-    /// the stepped values reach the bounds of `SpanLambdas`' doc; slivers
-    /// among them), in clip windows that cut them anywhere: spans a row apart
-    /// whose starts move either way by up to `STEPPED_COLUMNS` and more,
-    /// rows skipped by thin triangles, and the first span of each.
+    /// The values [`SpanStarts`] hands out at every span's first pixel
+    /// against the exact blend `2^32 a(p) + 2^31`, for random values in
+    /// `0..=65535` and random triangles with corners from 1 px to 2^18 px
+    /// around a centre (slivers among them), in clip windows that cut
+    /// them anywhere: spans a row apart whose starts move either way by up
+    /// to [`STEPPED_COLUMNS`] and more, rows skipped by thin triangles,
+    /// and the first span of each. Each is within the bound of
+    /// [`SpanStarts`]' docs for the unit steps taken since the last
+    /// division: `2^-43` a unit step and for the division, and `2^-32`
+    /// for the floor. The triangles' doubled areas stay below `2^62`, so
+    /// that the check, made over their common denominator, fits `i128`.
     #[test]
-    fn stepped_span_lambdas_are_exact() {
+    fn span_starts_stay_within_their_bound() {
         let mut random = xorshift(0x0DDB_1A5E_5EED_2026);
         let mut next = move || random.next().unwrap_or_default();
-        let (mut stepped, mut spans, mut near_but_divided) = (0, 0, 0);
+        let (mut stepped, mut spans, mut near_but_divided, mut longest) = (0, 0, 0, 0);
         for case in 0..3_000 {
-            // Corners within 2^(12 + scale) raw units of a random centre.
-            let scale = (next() % 21) as u32;
-            let centre = ((next() % 200) as i32 * 4096, (next() % 200) as i32 * 4096);
-            let mut corner = || {
-                let span = 1i64 << (12 + scale);
-                let offset = |r: u64| (r % (2 * span as u64 + 1)) as i64 - span;
-                let x = i64::from(centre.0) + offset(next());
-                let y = i64::from(centre.1) + offset(next());
-                // Within the 20.12 range.
-                let c = |v: i64| v.clamp(i32::MIN.into(), i32::MAX.into()) as i32;
-                Vertex::from_raw(c(x), c(y))
-            };
-            let (a, b) = (corner(), corner());
-            // A sliver one case in four: the third corner near the first
-            // two's line.
-            let c = match case % 4 {
-                0 => {
-                    let (a, b) = (a.raw(), b.raw());
-                    let jitter = (next() % 65) as i64 - 32;
-                    let mid = |u: i32, v: i32, j: i64| {
-                        let m = (i64::from(u) + i64::from(v)) / 2 + j;
-                        m.clamp(i32::MIN.into(), i32::MAX.into()) as i32
-                    };
-                    Vertex::from_raw(mid(a.0, b.0, jitter), mid(a.1, b.1, -jitter))
-                }
-                _ => corner(),
-            };
-            let t = Triangle::new(a, b, c);
+            let scale = (next() % 18) as u32;
+            let t = random_triangle(&mut next, scale, case % 4 == 0);
             let Some(frame) = Frame::new(&t) else {
                 continue;
             };
+            let values = [0; 3].map(|_| [0; 3].map(|_| (next() % 65536) as i64));
+            let linear = Linear::new(&frame, values);
             let clip = Rectangle::new(
                 Point::new((next() % 240) as i32 - 20, (next() % 240) as i32 - 20),
                 Size::new((next() % 300) as u32 + 1, (next() % 300) as u32 + 1),
             );
-            let mut lambdas = frame.span_lambdas();
-            let mut last: Option<(i32, i32)> = None;
+            let p = t.vertices.map(|v| {
+                let (x, y) = v.raw();
+                (i128::from(x), i128::from(y))
+            });
+            let area = |a: (i128, i128), b: (i128, i128), e: (i128, i128)| {
+                (b.0 - a.0) * (e.1 - a.1) - (b.1 - a.1) * (e.0 - a.0)
+            };
+            let d = area(p[0], p[1], p[2]);
+            let mut starts = SpanStarts::new(&frame, &linear);
+            // The last span's first pixel, and the unit steps since the
+            // last division.
+            let (mut last, mut units): (Option<(i32, i32)>, i128) = (None, 0);
             t.for_each_span(&clip, |span| {
-                let moved = lambdas.move_to(span.x_start, span.y);
-                let got = lambdas.t.map(|t| i128::from(t.q));
-                assert_eq!(
-                    got,
-                    reference(&t, span.x_start, span.y),
-                    "{t:?} at ({}, {})",
-                    span.x_start,
-                    span.y
-                );
-                let near = last.is_some_and(|(x, y)| {
-                    y + 1 == span.y && x.abs_diff(span.x_start) <= STEPPED_COLUMNS
+                let (x, y) = (span.x_start, span.y);
+                let got = starts.at(x, y);
+                let near = last.and_then(|(lx, ly)| {
+                    (ly + 1 == y && lx.abs_diff(x) <= STEPPED_COLUMNS).then_some(lx.abs_diff(x))
                 });
-                assert!(near || !moved, "stepped from afar");
-                near_but_divided += usize::from(near && !moved);
-                stepped += usize::from(moved);
-                last = Some((span.x_start, span.y));
+                let moved = near.filter(|_| matches!(starts.steps, Steps::Set { .. }));
+                units = match moved {
+                    Some(dx) => units + 1 + i128::from(dx),
+                    None => 0,
+                };
+                longest = longest.max(units);
+                let c = (i128::from(x) * 4096 + 2048, i128::from(y) * 4096 + 2048);
+                let w = [area(c, p[2], p[0]), area(c, p[0], p[1])];
+                for n in 0..3 {
+                    // 2^12 (got - 2^32 a_0 - 2^31) against 2^44 (a(p) -
+                    // a_0), times |D|.
+                    let g = i128::from(got[n] - (values[0][n] << 32) - (1 << 31)) << 12;
+                    let da = [values[1][n] - values[0][n], values[2][n] - values[0][n]];
+                    let x44 = (i128::from(da[0]) * w[0] + i128::from(da[1]) * w[1]) << 44;
+                    let error = g * d.abs() - x44 * d.signum();
+                    let bound = ((1 << 11) + 2 * (1 + units)) * d.abs();
+                    assert!(
+                        error.abs() <= bound,
+                        "{t:?} {values:?} at ({x}, {y}), channel {n}: {} units of 2^-44 after {units} unit steps",
+                        error as f64 / d.abs() as f64,
+                    );
+                }
+                near_but_divided += usize::from(near.is_some() && moved.is_none());
+                stepped += usize::from(moved.is_some());
+                last = Some((x, y));
                 spans += 1;
                 Ok::<(), Infallible>(())
             })
             .unwrap();
         }
         // Most spans were stepped to, and some divided for: some of them
-        // near enough to step to, but in a triangle whose steps do not
-        // fit 64 bits.
+        // near enough to step to, but in a triangle whose steps are too
+        // large; runs of many steps among them.
         assert!(
-            stepped * 2 > spans && stepped < spans && near_but_divided > 0,
-            "{stepped} of {spans} stepped, {near_but_divided} near but divided"
+            stepped * 2 > spans && stepped < spans && near_but_divided > 0 && longest > 200,
+            "{stepped} of {spans} stepped, {near_but_divided} near but divided, {longest} units at most"
         );
     }
 
