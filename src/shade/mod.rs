@@ -21,13 +21,16 @@
 //!
 //! - per triangle, the step per pixel `d = round(2^32 * 4096 * sum(a_k (y_(k+1)
 //!   - y_(k+2))) / D)`, one `i128` division per attribute;
-//! - per span, the value at its first pixel centre `p`: `L_k = round(2^60
-//!   w_k(p) / D)` for `k = 1, 2` in `i128`, shared by every attribute
-//!   (divided for at a triangle's first span, then stepped exactly from
-//!   one span's first pixel to the next, with no division: `SpanLambdas`
-//!   in the source), then `v = 2^32 a_0 + round(((a_1 - a_0) L_1 + (a_2 -
-//!   a_0) L_2) / 2^28) + 2^31`: the value plus the `1/2` of its rounding,
-//!   added once a span;
+//! - per span, the value at its first pixel centre `p`, from `2^44 (a(p) -
+//!   a_0)` in 20.44 fixed point: at a triangle's first span (and at any
+//!   span more than a row below or 8 columns across from the last), from `L_k = round(2^60 w_k(p) / D)` for `k = 1, 2`, two
+//!   `i128` divisions shared by every attribute, as `round(((a_1 - a_0)
+//!   L_1 + (a_2 - a_0) L_2) / 2^16)`; at the next span's first pixel, a
+//!   row down and `dx` columns across, by adding the attribute's row step
+//!   and `dx` times its column step, with no division and no product of
+//!   coordinates (`SpanStarts` in the source). Then `v = 2^32 a_0 +
+//!   round(2^-12 * that) + 2^31`: the value in 32.32, plus the `1/2` of
+//!   its rounding, added once a span;
 //! - per pixel, one add `v += d` per attribute, and the output is `floor(v
 //!   / 2^32)`, the integer part (the value rounded). On 32-bit targets
 //!   (Cortex-M, RISC-V) a Gouraud span carries its channels' integer
@@ -40,16 +43,17 @@
 //! Attribute values are integers in `0..=65535` (colour channels, `u16`
 //! depth). In units of the attribute:
 //!
-//! - the start value is off by at most `2 * 65535 * 2^-61` (the two `L_k`,
-//!   each within `1/2` of exact, scaled by `|a_k - a_0| <= 65535` and
-//!   `2^-60`) plus `2^-33` (the final shift), i.e. less than `2^-33 +
-//!   2^-44`;
+//! - the start value is off by less than `2^-20 + 2^-33`: `2^-43` for
+//!   the division (the two `L_k`, each within `2^-61` of exact, scaled by
+//!   `|a_k - a_0| <= 65535`, and the rounding to `2^-44`) and as much for
+//!   each unit step after it, over fewer than `3 * 2^20` of them, and
+//!   `2^-33` for the rounding to 32.32 (`SpanStarts`' docs);
 //! - the step is off by at most `2^-33`;
 //! - lit pixels of a row lie in the vertices' bounding box, whose width is
 //!   at most `2^20` px, so a span has at most `2^20` pixels and the last one
 //!   is reached after `n <= 2^20 - 1` steps.
 //!
-//! So the carried value is within `2^-33 + 2^-44 + (2^20 - 1) 2^-33 <
+//! So the carried value is within `2^-20 + 2^-33 + (2^20 - 1) 2^-33 <
 //! 2^-12` of the exact `a(p)` at every lit pixel, and the rounded output is
 //! within `1/2 + 2^-12 < 1` of it: **within 1 unit per channel**, for every
 //! triangle in range (huge, far off-screen or sliver alike). It equals the
@@ -222,8 +226,13 @@ pub(crate) struct SpanStarts<'a, const N: usize> {
 enum Steps<const N: usize> {
     /// Not set up yet.
     Unset,
-    /// A column right and a row down, in 20.44 fixed point.
-    Set { column: [i64; N], row: [i64; N] },
+    /// A row down and a column left, none or a column right (`down`),
+    /// and a column right and left, in 20.44 fixed point.
+    Set {
+        down: [[i64; N]; 3],
+        right: [i64; N],
+        left: [i64; N],
+    },
     /// A step is too large (a sliver): every span's first pixel is divided
     /// for.
     None,
@@ -287,31 +296,54 @@ impl<'a, const N: usize> SpanStarts<'a, N> {
     #[inline]
     fn step_by(&mut self, dx: i32) -> bool {
         if let Steps::Unset = self.steps {
-            self.steps = self.set_up_steps();
+            self.set_up_steps();
         }
-        let Steps::Set { column, row } = &self.steps else {
+        let Steps::Set { down, right, left } = &self.steps else {
             return false;
         };
-        for ((o, row), column) in self.offset.iter_mut().zip(row).zip(column) {
-            // |o| < 2^60 + 2^24 at the last lit pixel, |row| <= 2^60 and
-            // |dx column| <= 8 2^57 (struct docs): below 2^62.
-            *o += row + i64::from(dx) * column;
+        // |o| < 2^60 + 2^24 at the last lit pixel, |row| <= 2^60 and |dx|
+        // column steps at most 8 2^57 (struct docs): below 2^62 all the
+        // way.
+        let (first, column) = match dx {
+            ..0 => (&down[0], left),
+            0 => (&down[1], right),
+            1.. => (&down[2], right),
+        };
+        for (o, step) in self.offset.iter_mut().zip(first) {
+            *o += step;
+        }
+        // Adds, not a product: on ARMv6-M a 64-bit product is a library
+        // call, and the first pixels of a triangle's spans mostly move by
+        // a column or none, which the diagonal steps of `down` take at
+        // once.
+        for _ in 1..dx.unsigned_abs() {
+            for (o, step) in self.offset.iter_mut().zip(column) {
+                *o += step;
+            }
         }
         true
     }
 
-    /// The attributes' steps a column right and a row down, if within the
-    /// bounds of the struct's docs.
+    /// Sets up the attributes' steps ([`Steps`]), or none if they are
+    /// outside the bounds of the struct's docs. Written in place: returned,
+    /// the steps were copied by `memcpy` on a Cortex-M4.
     #[inline(never)]
-    fn set_up_steps(&self) -> Steps<N> {
+    fn set_up_steps(&mut self) {
+        self.steps = Steps::None;
         let Some([column, row]) = self.frame.lambda_steps() else {
-            return Steps::None;
+            return;
         };
         let (column, row) = (self.linear.offset(column), self.linear.offset(row));
         let within = |v: &[i64; N], bound: u64| v.iter().all(|v| v.unsigned_abs() <= bound);
-        match within(&column, 1 << 57) && within(&row, 1 << 60) {
-            true => Steps::Set { column, row },
-            false => Steps::None,
+        if within(&column, 1 << 57) && within(&row, 1 << 60) {
+            // Within 2^57 and 2^60: the negation and sums are exact.
+            let left = column.map(|c| -c);
+            let diagonal = |column: &[i64; N]| core::array::from_fn(|n| row[n] + column[n]);
+            self.steps = Steps::Set {
+                down: [diagonal(&left), row, diagonal(&column)],
+                right: column,
+                left,
+            };
         }
     }
 }
