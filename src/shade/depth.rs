@@ -334,11 +334,13 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, GouraudTriangle<C>> {
         };
         let frame = setup.frame;
         let z = depth_setup(&frame, self.z);
-        let mut z_starts = SpanStarts::new(&frame, &z);
-        let mut starts = SpanStarts::new(&frame, &setup.linear);
+        let both = setup.linear.and_depth(&z);
+        // The colours and the depth apart: the colours are those of the
+        // triangle drawn without depth.
+        let mut starts = SpanStarts::with_groups(&frame, &both, 3);
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
-            let [z0] = z_starts.at(span.x_start, span.y);
-            let start = starts.at(span.x_start, span.y);
+            let [r, g, b, z0] = starts.at(span.x_start, span.y);
+            let start = [r, g, b];
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
                 let run = Span {
                     y: span.y,

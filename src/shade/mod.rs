@@ -203,7 +203,11 @@ const STEPPED_COLUMNS: u32 = 8;
 /// Sizes: at a lit pixel the carried value is below `2^60 + 2^24` in
 /// magnitude (`|a(p) - a_0| <= 65535`); steps are taken only when the
 /// row step is within `2^60` and the column step within `2^57`, so a
-/// move adds less than `2^61` and every sum stays below `2^62`.
+/// move adds less than `2^61` and every sum stays below `2^62`. That
+/// test is made for a group of attributes at once, and a group whose
+/// steps fail it is divided for at every span: a Gouraud triangle's
+/// colours and its depth are two groups ([`with_groups`](Self::with_groups)),
+/// so that each gets the values it gets without the other.
 ///
 /// On a Cortex-M4 this replaced `L_1, L_2` stepped exactly (a quotient and
 /// a remainder each, a row step and up to eight column steps a span) and
@@ -219,6 +223,8 @@ pub(crate) struct SpanStarts<'a, const N: usize> {
     offset: [i64; N],
     /// The attributes' steps, set up at the first step.
     steps: Steps<N>,
+    /// Where the second group of attributes starts (`N` for one group).
+    split: usize,
 }
 
 /// The steps of [`SpanStarts`], set up when first needed.
@@ -227,11 +233,14 @@ enum Steps<const N: usize> {
     /// Not set up yet.
     Unset,
     /// A row down and a column left, none or a column right (`down`),
-    /// and a column right and left, in 20.44 fixed point.
+    /// and a column right and left, in 20.44 fixed point; 0 for the
+    /// attributes of a group whose steps are too large, which are
+    /// `divided` for at every span instead.
     Set {
         down: [[i64; N]; 3],
         right: [i64; N],
         left: [i64; N],
+        divided: [bool; N],
     },
     /// A step is too large (a sliver): every span's first pixel is divided
     /// for.
@@ -240,14 +249,21 @@ enum Steps<const N: usize> {
 
 impl<'a, const N: usize> SpanStarts<'a, N> {
     /// The starts of the spans of the triangle `frame` whose attributes
-    /// are `linear`.
+    /// are `linear`, all in one group.
     pub(crate) fn new(frame: &'a Frame, linear: &'a Linear<N>) -> Self {
+        Self::with_groups(frame, linear, N)
+    }
+
+    /// [`new`](Self::new) for two groups of attributes, `..split` and
+    /// `split..`.
+    pub(crate) fn with_groups(frame: &'a Frame, linear: &'a Linear<N>, split: usize) -> Self {
         Self {
             frame,
             linear,
             last: None,
             offset: [0; N],
             steps: Steps::Unset,
+            split,
         }
     }
 
@@ -273,32 +289,45 @@ impl<'a, const N: usize> SpanStarts<'a, N> {
             _ => None,
         };
         let stepped = match dx {
-            Some(dx) => self.step_by(dx),
+            Some(dx) => self.step_by(dx, x, y),
             None => false,
         };
         if !stepped {
-            self.divide_at(x, y);
+            self.divide_at(x, y, [true; N]);
         }
         self.last = Some((x, y));
         stepped
     }
 
-    /// The offsets at `(x, y)` from `L_1, L_2` found by division.
+    /// The offsets at `(x, y)` of the attributes `which`, from `L_1, L_2`
+    /// found by division.
     #[inline(never)]
-    fn divide_at(&mut self, x: i32, y: i32) {
+    fn divide_at(&mut self, x: i32, y: i32, which: [bool; N]) {
         let l = self.frame.lambdas_at(x, y);
-        // Below 2^60 + 2^47 for `l` in `[0, 2^60]` (`Linear::offset`).
-        self.offset = self.linear.offset(l).map(|o| o + (1 << 11));
+        let fresh = self.linear.offset(l);
+        for ((o, fresh), which) in self.offset.iter_mut().zip(fresh).zip(which) {
+            if which {
+                // Below 2^60 + 2^47 for `l` in `[0, 2^60]` (`Linear::offset`).
+                *o = fresh + (1 << 11);
+            }
+        }
     }
 
     /// Steps a row down and `dx` columns across (`|dx| <=
-    /// STEPPED_COLUMNS`); `false` if the triangle's steps are too large.
+    /// STEPPED_COLUMNS`), to `(x, y)`; `false` if the triangle's steps are
+    /// too large.
     #[inline]
-    fn step_by(&mut self, dx: i32) -> bool {
+    fn step_by(&mut self, dx: i32, x: i32, y: i32) -> bool {
         if let Steps::Unset = self.steps {
             self.set_up_steps();
         }
-        let Steps::Set { down, right, left } = &self.steps else {
+        let Steps::Set {
+            down,
+            right,
+            left,
+            divided,
+        } = &self.steps
+        else {
             return false;
         };
         // |o| < 2^60 + 2^24 at the last lit pixel, |row| <= 2^60 and |dx|
@@ -321,6 +350,11 @@ impl<'a, const N: usize> SpanStarts<'a, N> {
                 *o += step;
             }
         }
+        // A group whose steps are too large (stepped by 0 above).
+        let divided = *divided;
+        if divided.contains(&true) {
+            self.divide_at(x, y, divided);
+        }
         true
     }
 
@@ -333,18 +367,37 @@ impl<'a, const N: usize> SpanStarts<'a, N> {
         let Some([column, row]) = self.frame.lambda_steps() else {
             return;
         };
-        let (column, row) = (self.linear.offset(column), self.linear.offset(row));
-        let within = |v: &[i64; N], bound: u64| v.iter().all(|v| v.unsigned_abs() <= bound);
-        if within(&column, 1 << 57) && within(&row, 1 << 60) {
-            // Within 2^57 and 2^60: the negation and sums are exact.
-            let left = column.map(|c| -c);
-            let diagonal = |column: &[i64; N]| core::array::from_fn(|n| row[n] + column[n]);
-            self.steps = Steps::Set {
-                down: [diagonal(&left), row, diagonal(&column)],
-                right: column,
-                left,
-            };
+        let (mut column, mut row) = (self.linear.offset(column), self.linear.offset(row));
+        // Each group's steps within 2^57 and 2^60, or the group divided
+        // for (an empty group is not stepped).
+        let stepped = |group: core::ops::Range<usize>| {
+            !group.is_empty()
+                && group.clone().all(|n| {
+                    column[n].unsigned_abs() <= 1 << 57 && row[n].unsigned_abs() <= 1 << 60
+                })
+        };
+        let (first, second) = (stepped(0..self.split), stepped(self.split..N));
+        if !first && !second {
+            return;
         }
+        let divided: [bool; N] = core::array::from_fn(|n| match n < self.split {
+            true => !first,
+            false => !second,
+        });
+        for n in 0..N {
+            if divided[n] {
+                (column[n], row[n]) = (0, 0);
+            }
+        }
+        // Within 2^57 and 2^60: the negation and sums are exact.
+        let left = column.map(|c| -c);
+        let diagonal = |column: &[i64; N]| core::array::from_fn(|n| row[n] + column[n]);
+        self.steps = Steps::Set {
+            down: [diagonal(&left), row, diagonal(&column)],
+            right: column,
+            left,
+            divided,
+        };
     }
 }
 
@@ -429,6 +482,22 @@ impl<const N: usize> Linear<N> {
             let low = product(d1, b1) + product(d2, b2);
             high * (1 << 14) + ((low + (1 << 15)) >> 16)
         })
+    }
+}
+
+impl Linear<3> {
+    /// These three attributes followed by the depth `z`: a Gouraud
+    /// triangle with depth takes its span starts for both at once, from
+    /// one set of divisions ([`SpanStarts`]).
+    pub(crate) fn and_depth(&self, z: &Linear<1>) -> Linear<4> {
+        let [b0, b1, b2] = self.base;
+        let [[d0, d1, d2], [e0, e1, e2]] = self.da;
+        let [s0, s1, s2] = self.step;
+        Linear {
+            base: [b0, b1, b2, z.base[0]],
+            da: [[d0, d1, d2, z.da[0][0]], [e0, e1, e2, z.da[1][0]]],
+            step: [s0, s1, s2, z.step[0]],
+        }
     }
 }
 
@@ -1106,6 +1175,51 @@ mod tests {
         assert!(
             stepped * 2 > spans && stepped < spans && near_but_divided > 0 && longest > 200,
             "{stepped} of {spans} stepped, {near_but_divided} near but divided, {longest} units at most"
+        );
+    }
+
+    /// Two groups of attributes (a Gouraud triangle's colours and its
+    /// depth) get at every span's first pixel exactly the values each
+    /// gets alone, on random triangles whose depth steps are often too
+    /// large to step (depths across `0..=65535` on triangles a few pixels
+    /// wide) while their colours' are not, and the other way round.
+    #[test]
+    fn groups_get_the_values_they_get_alone() {
+        let mut random = xorshift(0x6A0C_5EED_0002_2026);
+        let mut next = move || random.next().unwrap_or_default();
+        let (mut spans, mut mixed) = (0, 0);
+        for case in 0..4_000 {
+            let scale = (next() % 8) as u32;
+            let t = random_triangle(&mut next, scale, case % 4 == 0);
+            let Some(frame) = Frame::new(&t) else {
+                continue;
+            };
+            let colors = [0; 3].map(|_| [0; 3].map(|_| (next() % 256) as i64));
+            let z = [0; 3].map(|_| [(next() % 65536) as i64]);
+            let (colors, z) = (Linear::new(&frame, colors), Linear::new(&frame, z));
+            let both = colors.and_depth(&z);
+            let mut alone = (
+                SpanStarts::new(&frame, &colors),
+                SpanStarts::new(&frame, &z),
+            );
+            let mut grouped = SpanStarts::with_groups(&frame, &both, 3);
+            let clip = Rectangle::new(Point::new(-20, -20), Size::new(300, 300));
+            t.for_each_span(&clip, |span| {
+                let (x, y) = (span.x_start, span.y);
+                let [r, g, b, depth] = grouped.at(x, y);
+                assert_eq!([r, g, b], alone.0.at(x, y), "{t:?} at ({x}, {y})");
+                assert_eq!([depth], alone.1.at(x, y), "{t:?} at ({x}, {y})");
+                if let Steps::Set { divided, .. } = grouped.steps {
+                    mixed += usize::from(divided.contains(&true));
+                }
+                spans += 1;
+                Ok::<(), Infallible>(())
+            })
+            .unwrap();
+        }
+        assert!(
+            mixed > 100 && mixed * 4 < spans,
+            "{mixed} of {spans} spans with a group divided"
         );
     }
 
