@@ -12,33 +12,34 @@
 //! 3. a 64 px triangle, the same way;
 //! 4. the 16 px triangle Gouraud-shaded, through `draw`;
 //! 5. the same triangle flat, depth-tested;
-//! 6. a line 3 px wide and 100 px long at a slope of 1/2 (the second of
+//! 6. the same triangle Gouraud-shaded and depth-tested;
+//! 7. a line 3 px wide and 100 px long at a slope of 1/2 (the second of
 //!    `.ci/icount`'s "3 px wide" lines): its corners, then its rows;
-//! 7. a line 3 px wide with ends 10^6 px off-screen (`.ci/icount`'s):
+//! 8. a line 3 px wide with ends 10^6 px off-screen (`.ci/icount`'s):
 //!    its rows found by edges set up in 128 bits;
-//! 8. an 18 px hexagon (`.ci/icount`'s hexagons): the monotone test and
+//! 9. an 18 px hexagon (`.ci/icount`'s hexagons): the monotone test and
 //!    the two chains of edges;
-//! 9. `.ci/icount`'s pentagram, 220 px, even-odd: the active edge table;
-//! 10. a polyline of 21 points in a zigzag, 8 px wide with mitred joins
+//! 10. `.ci/icount`'s pentagram, 220 px, even-odd: the active edge table;
+//! 11. a polyline of 21 points in a zigzag, 8 px wide with mitred joins
 //!     (the host bench's, `benches/lines.rs`), through the framebuffer's
 //!     span sink: its pieces written whole, overlapping;
-//! 11. the same polyline through `draw` (the framebuffer as a
+//! 12. the same polyline through `draw` (the framebuffer as a
 //!     `DrawTarget`): each pixel once, its pieces walked in masked tiles;
-//! 12. the same polyline with round joins, through the span sink: each
+//! 13. the same polyline with round joins, through the span sink: each
 //!     join a disk sector, walked row by row with a square root a row;
-//! 13. the same 20 segments drawn as separate thick lines;
-//! 14. `.ci/icount`'s 64 lines 1 px wide and 16 px long, in a star;
-//! 15. the same star across the screen's right edge (`.ci/icount`'s
+//! 14. the same 20 segments drawn as separate thick lines;
+//! 15. `.ci/icount`'s 64 lines 1 px wide and 16 px long, in a star;
+//! 16. the same star across the screen's right edge (`.ci/icount`'s
 //!     "across the screen's edge" row): lines cut by the clip;
-//! 16. 64 random lines 1 px wide that the screen's edges cut
+//! 17. 64 random lines 1 px wide that the screen's edges cut
 //!     (`builtin_scene::cut_line`): every slope and length, cut on any
 //!     side, as the host bench's "lines cut";
-//! 17. and 18. 64 random thick lines 2 to 12 px wide, short then long
+//! 18. and 19. 64 random thick lines 2 to 12 px wide, short then long
 //!     (`builtin_scene::random_thick_line`, the host bench's two sets);
-//! 19. the built-in scene (`builtin_scene::for_each_command`) from a
+//! 20. the built-in scene (`builtin_scene::for_each_command`) from a
 //!     display list, drawn whole into the framebuffer, as `.ci/icount`'s
 //!     "whole frame" row;
-//! 20. the same list rendered in bands of 16 rows, as its "bands of 16"
+//! 21. the same list rendered in bands of 16 rows, as its "bands of 16"
 //!     row: where the bands' extra instructions go.
 //!
 //! Built for the host, it does nothing.
@@ -126,6 +127,13 @@ mod target {
         let tested = small.fill(Rgb565::RED).with_depth([100, 200, 300], depth);
         begin();
         let Ok(()) = black_box(&tested).draw(black_box(&mut *FB));
+        end();
+        // The same triangle Gouraud-shaded and depth-tested, against the
+        // depth buffer cleared again.
+        depth.clear();
+        let both = shaded.with_depth([100, 200, 300], depth);
+        begin();
+        let Ok(()) = black_box(&both).draw(black_box(&mut *FB));
         end();
         let line = super::builtin_scene::star_line(1, 100)
             .stroke(Rgb565::RED)

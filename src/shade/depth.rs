@@ -303,7 +303,7 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, FilledTriangle<C>> {
         };
         let z = depth_setup(&frame, self.z);
         let color = self.shaded.color;
-        let mut starts = SpanStarts::new(&frame, &z);
+        let mut starts = SpanStarts::<1, 1>::new(&frame, &z);
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
             let [z0] = starts.at(span.x_start, span.y);
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
@@ -337,7 +337,7 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, GouraudTriangle<C>> {
         let both = setup.linear.and_depth(&z);
         // The colours and the depth apart: the colours are those of the
         // triangle drawn without depth.
-        let mut starts = SpanStarts::with_groups(&frame, &both, 3);
+        let mut starts = SpanStarts::<4, 3>::new(&frame, &both);
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
             let [r, g, b, z0] = starts.at(span.x_start, span.y);
             let start = [r, g, b];

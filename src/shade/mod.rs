@@ -206,7 +206,7 @@ const STEPPED_COLUMNS: u32 = 8;
 /// move adds less than `2^61` and every sum stays below `2^62`. That
 /// test is made for a group of attributes at once, and a group whose
 /// steps fail it is divided for at every span: a Gouraud triangle's
-/// colours and its depth are two groups ([`with_groups`](Self::with_groups)),
+/// colours and its depth are two groups (`SPLIT`),
 /// so that each gets the values it gets without the other.
 ///
 /// On a Cortex-M4 this replaced `L_1, L_2` stepped exactly (a quotient and
@@ -214,7 +214,7 @@ const STEPPED_COLUMNS: u32 = 8;
 /// the three start values made from them by eight 32 by 32-bit products:
 /// about 230 instructions a span (`.ci/itrace`).
 #[derive(Debug)]
-pub(crate) struct SpanStarts<'a, const N: usize> {
+pub(crate) struct SpanStarts<'a, const N: usize, const SPLIT: usize> {
     frame: &'a Frame,
     linear: &'a Linear<N>,
     /// The last span's first pixel.
@@ -223,8 +223,6 @@ pub(crate) struct SpanStarts<'a, const N: usize> {
     offset: [i64; N],
     /// The attributes' steps, set up at the first step.
     steps: Steps<N>,
-    /// Where the second group of attributes starts (`N` for one group).
-    split: usize,
 }
 
 /// The steps of [`SpanStarts`], set up when first needed.
@@ -247,23 +245,17 @@ enum Steps<const N: usize> {
     None,
 }
 
-impl<'a, const N: usize> SpanStarts<'a, N> {
+impl<'a, const N: usize, const SPLIT: usize> SpanStarts<'a, N, SPLIT> {
     /// The starts of the spans of the triangle `frame` whose attributes
-    /// are `linear`, all in one group.
+    /// are `linear`, in two groups, `..SPLIT` and `SPLIT..` (one group for
+    /// `SPLIT = N`).
     pub(crate) fn new(frame: &'a Frame, linear: &'a Linear<N>) -> Self {
-        Self::with_groups(frame, linear, N)
-    }
-
-    /// [`new`](Self::new) for two groups of attributes, `..split` and
-    /// `split..`.
-    pub(crate) fn with_groups(frame: &'a Frame, linear: &'a Linear<N>, split: usize) -> Self {
         Self {
             frame,
             linear,
             last: None,
             offset: [0; N],
             steps: Steps::Unset,
-            split,
         }
     }
 
@@ -280,7 +272,7 @@ impl<'a, const N: usize> SpanStarts<'a, N> {
     /// Moves to pixel `(x, y)`, by a step from the last span's first pixel
     /// when it lies a row above and at most [`STEPPED_COLUMNS`] across,
     /// else by division; `true` if it stepped.
-    #[inline]
+    #[inline(always)]
     fn move_to(&mut self, x: i32, y: i32) -> bool {
         let dx = match self.last {
             Some((lx, ly)) if ly.checked_add(1) == Some(y) => x
@@ -316,7 +308,7 @@ impl<'a, const N: usize> SpanStarts<'a, N> {
     /// Steps a row down and `dx` columns across (`|dx| <=
     /// STEPPED_COLUMNS`), to `(x, y)`; `false` if the triangle's steps are
     /// too large.
-    #[inline]
+    #[inline(always)]
     fn step_by(&mut self, dx: i32, x: i32, y: i32) -> bool {
         if let Steps::Unset = self.steps {
             self.set_up_steps();
@@ -350,9 +342,10 @@ impl<'a, const N: usize> SpanStarts<'a, N> {
                 *o += step;
             }
         }
-        // A group whose steps are too large (stepped by 0 above).
+        // A group whose steps are too large (stepped by 0 above); none
+        // with one group.
         let divided = *divided;
-        if divided.contains(&true) {
+        if SPLIT < N && divided.contains(&true) {
             self.divide_at(x, y, divided);
         }
         true
@@ -376,11 +369,11 @@ impl<'a, const N: usize> SpanStarts<'a, N> {
                     column[n].unsigned_abs() <= 1 << 57 && row[n].unsigned_abs() <= 1 << 60
                 })
         };
-        let (first, second) = (stepped(0..self.split), stepped(self.split..N));
+        let (first, second) = (stepped(0..SPLIT), stepped(SPLIT..N));
         if !first && !second {
             return;
         }
-        let divided: [bool; N] = core::array::from_fn(|n| match n < self.split {
+        let divided: [bool; N] = core::array::from_fn(|n| match n < SPLIT {
             true => !first,
             false => !second,
         });
@@ -879,7 +872,7 @@ impl<C: ShadeColor> GouraudTriangle<C> {
         let Some(setup) = GouraudSetup::new(self) else {
             return Ok(());
         };
-        let mut starts = SpanStarts::new(&setup.frame, &setup.linear);
+        let mut starts = SpanStarts::<3, 3>::new(&setup.frame, &setup.linear);
         shaded_spans(&self.triangle, clip, &mut |span| {
             let start = starts.at(span.x_start, span.y);
             f(span, &mut setup.ramp(start, 0, span.len()))
@@ -913,7 +906,7 @@ impl<C: ShadeColor> Drawable for GouraudTriangle<C> {
             return Ok(());
         };
         let clip = target.bounding_box();
-        let mut starts = SpanStarts::new(&setup.frame, &setup.linear);
+        let mut starts = SpanStarts::<3, 3>::new(&setup.frame, &setup.linear);
         shaded_spans(&self.triangle, &clip, &mut |span| {
             let start = starts.at(span.x_start, span.y);
             target.fill_contiguous(&span.rect(), setup.ramp(start, 0, span.len()))
@@ -1129,7 +1122,7 @@ mod tests {
                 (b.0 - a.0) * (e.1 - a.1) - (b.1 - a.1) * (e.0 - a.0)
             };
             let d = area(p[0], p[1], p[2]);
-            let mut starts = SpanStarts::new(&frame, &linear);
+            let mut starts = SpanStarts::<3, 3>::new(&frame, &linear);
             // The last span's first pixel, and the unit steps since the
             // last division.
             let (mut last, mut units): (Option<(i32, i32)>, i128) = (None, 0);
@@ -1199,10 +1192,10 @@ mod tests {
             let (colors, z) = (Linear::new(&frame, colors), Linear::new(&frame, z));
             let both = colors.and_depth(&z);
             let mut alone = (
-                SpanStarts::new(&frame, &colors),
-                SpanStarts::new(&frame, &z),
+                SpanStarts::<3, 3>::new(&frame, &colors),
+                SpanStarts::<1, 1>::new(&frame, &z),
             );
-            let mut grouped = SpanStarts::with_groups(&frame, &both, 3);
+            let mut grouped = SpanStarts::<4, 3>::new(&frame, &both);
             let clip = Rectangle::new(Point::new(-20, -20), Size::new(300, 300));
             t.for_each_span(&clip, |span| {
                 let (x, y) = (span.x_start, span.y);
