@@ -454,28 +454,32 @@ impl<const N: usize> Linear<N> {
     /// (da_1 h_1 + da_2 h_2)` at most `2^62`, and the result below `2^62
     /// + 2^32`: no overflow for any `l`.
     fn offset(&self, l: [i64; 2]) -> [i64; N] {
-        let split = |l: i64| {
-            (
-                i32::try_from(l >> 30).unwrap_or(0),
-                // Below 2^30: the cast is exact.
-                (l & ((1 << 30) - 1)) as i32,
-            )
-        };
-        let ((h1, b1), (h2, b2)) = (split(l[0]), split(l[1]));
-        // On ARMv6-M a library call each, as they stay: with the 16-bit
-        // quarters of `raster::wide::product_u32` in their place, the
-        // Gouraud window of `.ci/itrace` took 507 instructions fewer (when
-        // every span's start took these products), but the compiler then
-        // laid out the band loop of `.ci/icount`'s scene otherwise (bands
-        // of 16 rows 1.0 % slower).
-        let product = |a: i32, b: i32| i64::from(a) * i64::from(b);
-        core::array::from_fn(|n| {
-            let (d1, d2) = (self.da[0][n], self.da[1][n]);
-            let high = product(d1, h1) + product(d2, h2);
-            let low = product(d1, b1) + product(d2, b2);
-            high * (1 << 14) + ((low + (1 << 15)) >> 16)
-        })
+        core::array::from_fn(|n| blend_offset([self.da[0][n], self.da[1][n]], l))
     }
+}
+
+/// One attribute's [`Linear::offset`], for its differences `[a_1 - a_0,
+/// a_2 - a_0]`.
+#[inline]
+fn blend_offset([d1, d2]: [i32; 2], l: [i64; 2]) -> i64 {
+    let split = |l: i64| {
+        (
+            i32::try_from(l >> 30).unwrap_or(0),
+            // Below 2^30: the cast is exact.
+            (l & ((1 << 30) - 1)) as i32,
+        )
+    };
+    let ((h1, b1), (h2, b2)) = (split(l[0]), split(l[1]));
+    // On ARMv6-M a library call each, as they stay: with the 16-bit
+    // quarters of `raster::wide::product_u32` in their place, the Gouraud
+    // window of `.ci/itrace` took 507 instructions fewer (when every span's
+    // start took these products), but the compiler then laid out the band
+    // loop of `.ci/icount`'s scene otherwise (bands of 16 rows 1.0 %
+    // slower).
+    let product = |a: i32, b: i32| i64::from(a) * i64::from(b);
+    let high = product(d1, h1) + product(d2, h2);
+    let low = product(d1, b1) + product(d2, b2);
+    high * (1 << 14) + ((low + (1 << 15)) >> 16)
 }
 
 impl Linear<3> {
