@@ -97,7 +97,7 @@ pub(crate) struct Frame {
     p: [(i64, i64); 3],
     area2: i128,
     /// `m = 2 |D|`, which every value of the triangle's shading is divided
-    /// by (`SpanLambdas`, `Linear`), prepared once.
+    /// by (`SpanStarts`, `Linear`), prepared once.
     divisor: Divisor,
 }
 
@@ -1249,7 +1249,7 @@ mod tests {
                 let (mut v, mut d) = ([0i64; 3], [0i64; 3]);
                 for c in 0..C::CHANNELS {
                     // A carried value: an exact one in 0..=MAX, plus the
-                    // 1/2 of its rounding (`Linear::at`).
+                    // 1/2 of its rounding (`SpanStarts::at`).
                     let max = i64::from(C::MAX[c]) << 32;
                     let mut value = || match k {
                         0..4 => max * (next() % 2) as i64 + (1 << 31),

@@ -127,9 +127,10 @@ pub(crate) fn ys_within(a: Pt, d: Pt, xs: (i64, i64)) -> Option<(i64, i64)> {
 ///
 /// Out of line: a masked stroke calls it only after a tile with nothing
 /// lit. Written here rather than in `Stroke`, the Cortex-M4 build of the
-/// shading's `SpanLambdas::at` (another module, unchanged) stayed as it
-/// was: `.ci/itrace`'s 16 px Gouraud window 10,894 instructions, where
-/// the same code as a method of `Stroke` gave 11,385.
+/// shading's span starts (another module, unchanged) stayed as it was
+/// when it was measured: `.ci/itrace`'s 16 px Gouraud window 10,894
+/// instructions, where the same code as a method of `Stroke` gave
+/// 11,385.
 #[inline(never)]
 pub(crate) fn first_row_near(
     ends: Option<(usize, usize)>,
