@@ -1010,9 +1010,29 @@ mod tests {
         }
     }
 
-    /// Random triangles with corners from 1 px to `2^(1 + scale)` px
-    /// around a centre (clamped to the 20.12 range), one in four a sliver
-    /// (the third corner near the others' line).
+    /// Calls `check` with `cases` random triangles of nonzero area from
+    /// `seed` ([`random_triangle`], of scales below `scales`, one in four
+    /// a sliver), their frames, and the generator for more.
+    fn for_random_triangles(
+        seed: u64,
+        cases: usize,
+        scales: u64,
+        mut check: impl FnMut(&Triangle, Frame, &mut dyn FnMut() -> u64),
+    ) {
+        let mut random = xorshift(seed);
+        let mut next = move || random.next().unwrap_or_default();
+        for case in 0..cases {
+            let scale = (next() % scales) as u32;
+            let t = random_triangle(&mut next, scale, case % 4 == 0);
+            if let Some(frame) = Frame::new(&t) {
+                check(&t, frame, &mut next);
+            }
+        }
+    }
+
+    /// A random triangle with corners from 1 px to `2^(1 + scale)` px
+    /// around a centre (clamped to the 20.12 range), or a sliver (the
+    /// third corner near the others' line).
     fn random_triangle(next: &mut impl FnMut() -> u64, scale: u32, sliver: bool) -> Triangle {
         let centre = ((next() % 200) as i32 * 4096, (next() % 200) as i32 * 4096);
         let mut corner = || {
@@ -1046,15 +1066,8 @@ mod tests {
     /// triangles of every size and slivers.
     #[test]
     fn lambdas_and_their_steps_match_their_definitions() {
-        let mut random = xorshift(0x1A3B_DA55_7E95_2026);
-        let mut next = move || random.next().unwrap_or_default();
         let (mut steps, mut refused) = (0, 0);
-        for case in 0..20_000 {
-            let scale = (next() % 21) as u32;
-            let t = random_triangle(&mut next, scale, case % 4 == 0);
-            let Some(frame) = Frame::new(&t) else {
-                continue;
-            };
+        for_random_triangles(0x1A3B_DA55_7E95_2026, 20_000, 21, |t, frame, next| {
             let (x, y) = ((next() % 300) as i32 - 50, (next() % 300) as i32 - 50);
             let here = reference(&t, x, y);
             let fit = |v: i128| v.clamp(i64::MIN.into(), i64::MAX.into()) as i64;
@@ -1087,7 +1100,7 @@ mod tests {
                     refused += 1;
                 }
             }
-        }
+        });
         assert!(
             steps > 2 * refused && refused > 0,
             "{steps} set up, {refused} refused"
@@ -1107,15 +1120,8 @@ mod tests {
     /// that the check, made over their common denominator, fits `i128`.
     #[test]
     fn span_starts_stay_within_their_bound() {
-        let mut random = xorshift(0x0DDB_1A5E_5EED_2026);
-        let mut next = move || random.next().unwrap_or_default();
         let (mut stepped, mut spans, mut near_but_divided, mut longest) = (0, 0, 0, 0);
-        for case in 0..3_000 {
-            let scale = (next() % 18) as u32;
-            let t = random_triangle(&mut next, scale, case % 4 == 0);
-            let Some(frame) = Frame::new(&t) else {
-                continue;
-            };
+        for_random_triangles(0x0DDB_1A5E_5EED_2026, 3_000, 18, |t, frame, next| {
             let values = [0; 3].map(|_| [0; 3].map(|_| (next() % 65536) as i64));
             let linear = Linear::new(&frame, values);
             let clip = Rectangle::new(
@@ -1169,7 +1175,7 @@ mod tests {
                 Ok::<(), Infallible>(())
             })
             .unwrap();
-        }
+        });
         // Most spans were stepped to, and some divided for: some of them
         // near enough to step to, but in a triangle whose steps are too
         // large; runs of many steps among them.
@@ -1186,15 +1192,8 @@ mod tests {
     /// wide) while their colours' are not, and the other way round.
     #[test]
     fn groups_get_the_values_they_get_alone() {
-        let mut random = xorshift(0x6A0C_5EED_0002_2026);
-        let mut next = move || random.next().unwrap_or_default();
         let (mut spans, mut mixed) = (0, 0);
-        for case in 0..4_000 {
-            let scale = (next() % 8) as u32;
-            let t = random_triangle(&mut next, scale, case % 4 == 0);
-            let Some(frame) = Frame::new(&t) else {
-                continue;
-            };
+        for_random_triangles(0x6A0C_5EED_0002_2026, 4_000, 8, |t, frame, next| {
             let colors = [0; 3].map(|_| [0; 3].map(|_| (next() % 256) as i64));
             let z = [0; 3].map(|_| [(next() % 65536) as i64]);
             let (colors, z) = (Linear::new(&frame, colors), Linear::new(&frame, z));
@@ -1217,7 +1216,7 @@ mod tests {
                 Ok::<(), Infallible>(())
             })
             .unwrap();
-        }
+        });
         assert!(
             mixed > 100 && mixed * 4 < spans,
             "{mixed} of {spans} spans with a group divided"
