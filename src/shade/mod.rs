@@ -1069,7 +1069,7 @@ mod tests {
         let (mut steps, mut refused) = (0, 0);
         for_random_triangles(0x1A3B_DA55_7E95_2026, 20_000, 21, |t, frame, next| {
             let (x, y) = ((next() % 300) as i32 - 50, (next() % 300) as i32 - 50);
-            let here = reference(&t, x, y);
+            let here = reference(t, x, y);
             let fit = |v: i128| v.clamp(i64::MIN.into(), i64::MAX.into()) as i64;
             assert_eq!(frame.lambdas_at(x, y), here.map(fit), "{t:?} at ({x}, {y})");
             // The steps: 2^60 times the weights' change a pixel across or
