@@ -19,13 +19,21 @@
 //! (the very same spans as the flat triangle: [`Triangle::for_each_span`])
 //! are shaded as follows:
 //!
-//! - per triangle, the step per pixel `d = round(2^32 * 4096 * sum(a_k (y_(k+1)
-//!   - y_(k+2))) / D)`, one `i128` division per attribute;
+//! - per triangle at least a pixel tall, the steps of `L_k = 2^60 w_k / D`
+//!   (below) a column right and a row down, rounded: four `i128`
+//!   divisions shared by every attribute; from them, each attribute's
+//!   steps a column right and a row down in 20.44 fixed point (`2^44` times
+//!   `(a_1 - a_0) dL_1 + (a_2 - a_0) dL_2`, rounded), and its step per
+//!   pixel `d` in 32.32, the column step rounded to `2^-32`. A triangle
+//!   under a pixel tall has one span: its `d = round(2^32 * 4096 *
+//!   sum(a_k (y_(k+1) - y_(k+2))) / D)`, one `i128` division per
+//!   attribute;
 //! - per span, the value at its first pixel centre `p`, from `2^44 (a(p) -
 //!   a_0)` in 20.44 fixed point: at a triangle's first span (and at any
-//!   span more than a row below or 8 columns across from the last), from `L_k = round(2^60 w_k(p) / D)` for `k = 1, 2`, two
-//!   `i128` divisions shared by every attribute, as `round(((a_1 - a_0)
-//!   L_1 + (a_2 - a_0) L_2) / 2^16)`; at the next span's first pixel, a
+//!   span more than a row below or 8 columns across from the last), from
+//!   `L_k = round(2^60 w_k(p) / D)` for `k = 1, 2`, two `i128` divisions
+//!   shared by every attribute, as `round(((a_1 - a_0) L_1 + (a_2 - a_0)
+//!   L_2) / 2^16)`; at the next span's first pixel, a
 //!   row down and `dx` columns across, by adding the attribute's row step
 //!   and `dx` times its column step, with no division and no product of
 //!   coordinates (`SpanStarts` in the source). Then `v = 2^32 a_0 +
@@ -48,13 +56,15 @@
 //!   `|a_k - a_0| <= 65535`, and the rounding to `2^-44`) and as much for
 //!   each unit step after it, over fewer than `3 * 2^20` of them, and
 //!   `2^-33` for the rounding to 32.32 (`SpanStarts`' docs);
-//! - the step is off by at most `2^-33`;
+//! - the step is off by less than `2^-33 + 2^-43` (the column step in
+//!   20.44 within `2^-43`, like a span start's unit step, then rounded to
+//!   `2^-32`);
 //! - lit pixels of a row lie in the vertices' bounding box, whose width is
 //!   at most `2^20` px, so a span has at most `2^20` pixels and the last one
 //!   is reached after `n <= 2^20 - 1` steps.
 //!
-//! So the carried value is within `2^-20 + 2^-33 + (2^20 - 1) 2^-33 <
-//! 2^-12` of the exact `a(p)` at every lit pixel, and the rounded output is
+//! So the carried value is within `2^-20 + 2^-33 + (2^20 - 1) (2^-33 +
+//! 2^-43) < 2^-12` of the exact `a(p)` at every lit pixel, and the rounded output is
 //! within `1/2 + 2^-12 < 1` of it: **within 1 unit per channel**, for every
 //! triangle in range (huge, far off-screen or sliver alike). It equals the
 //! exactly rounded value unless `a(p)` lies within `2^-12` of a half
@@ -99,6 +109,11 @@ pub(crate) struct Frame {
     /// `m = 2 |D|`, which every value of the triangle's shading is divided
     /// by (`SpanStarts`, `Linear`), prepared once.
     divisor: Divisor,
+    /// The steps of `L_1, L_2` a column right and a row down, for a
+    /// triangle at least a pixel tall
+    /// ([`lambda_steps_by_division`](Self::lambda_steps_by_division)):
+    /// every attribute's steps are made from them.
+    lambda_steps: Option<[[i64; 2]; 2]>,
 }
 
 impl Frame {
@@ -112,7 +127,22 @@ impl Frame {
         // Raw coordinates are far below 2^62: exact (raster::wide).
         let area2 = orientation(p[0], p[1], p[2]);
         let divisor = Divisor::new(NonZeroU128::new(2 * area2.unsigned_abs())?);
-        Some(Self { p, area2, divisor })
+        let mut frame = Self {
+            p,
+            area2,
+            divisor,
+            lambda_steps: None,
+        };
+        // Under a pixel tall, a triangle crosses one row of pixel centres
+        // at most: it has one span, and nothing to step. Its attributes'
+        // per-pixel steps take a division each instead of the four here.
+        let ys = p.map(|p| p.1);
+        if let (Some(low), Some(high)) = (ys.into_iter().min(), ys.into_iter().max()) {
+            if high - low >= 4096 {
+                frame.lambda_steps = frame.lambda_steps_by_division();
+            }
+        }
+        Some(frame)
     }
 
     /// `round(n / D)`, halves up, as `floor((2 s n + |D|) / m)` for `s` the
@@ -151,9 +181,11 @@ impl Frame {
     /// The changes of `L_1, L_2` a column right and a row down, rounded
     /// (`round(2^60 4096 (y_(k+1) - y_(k+2)) / D)` and `round(2^60 4096
     /// (x_(k+2) - x_(k+1)) / D)`); `None` unless each is below `2^61` in
-    /// magnitude, a change of 2 (only a triangle narrower than a pixel across a step
-    /// changes them more).
-    fn lambda_steps(&self) -> Option<[[i64; 2]; 2]> {
+    /// magnitude, a change of 2 (only a triangle narrower than a pixel
+    /// across a step changes them more). Four `i128` divisions, out of
+    /// line.
+    #[inline(never)]
+    fn lambda_steps_by_division(&self) -> Option<[[i64; 2]; 2]> {
         let p = &self.p;
         // 2^72 d, below 2^105 (d below 2^33).
         let step = |d: i64| {
@@ -190,7 +222,7 @@ const STEPPED_COLUMNS: u32 = 8;
 /// value handed out is `2^32 a_0 + 2^31` plus its top 52 bits. A row down
 /// and `dx` columns across adds the attribute's row step plus `dx` times
 /// its column step, each `da_1 s_1 + da_2 s_2` for the steps `s_k` of
-/// `L_k` ([`Frame::lambda_steps`]), rounded to `2^-44`
+/// `L_k` ([`Frame::lambda_steps_by_division`]), rounded to `2^-44`
 /// ([`Linear::offset`]): off by less than `2 * 65535 * 2^-61 + 2^-45 <
 /// 2^-43` a unit step. From a division on, the first pixels of a
 /// triangle's spans go down at most `2^20` rows and, the left side of a
@@ -357,10 +389,9 @@ impl<'a, const N: usize, const SPLIT: usize> SpanStarts<'a, N, SPLIT> {
     #[inline(never)]
     fn set_up_steps(&mut self) {
         self.steps = Steps::None;
-        let Some([column, row]) = self.frame.lambda_steps() else {
+        let Some([mut column, mut row]) = self.linear.moves else {
             return;
         };
-        let (mut column, mut row) = (self.linear.offset(column), self.linear.offset(row));
         // Each group's steps within 2^57 and 2^60, or the group divided
         // for (an empty group is not stepped).
         let stepped = |group: core::ops::Range<usize>| {
@@ -403,7 +434,12 @@ pub(crate) struct Linear<const N: usize> {
     /// `a_1 - a_0`, `a_2 - a_0` (values in `0..=65535`): in `i32`, so that
     /// [`offset`](Self::offset) multiplies 32 by 32 bits.
     da: [[i32; N]; 2],
+    /// The step a pixel right in 32.32 fixed point.
     step: [i64; N],
+    /// The steps a column right and a row down in 20.44, `[column, row]`,
+    /// made from the frame's steps of `L_1, L_2` ([`Linear::offset`]), if
+    /// it has them.
+    moves: Option<[[i64; N]; 2]>,
 }
 
 impl<const N: usize> Linear<N> {
@@ -412,7 +448,6 @@ impl<const N: usize> Linear<N> {
         let p = &frame.p;
         let mut base = [0; N];
         let mut da = [[0; N]; 2];
-        let mut step = [0; N];
         for n in 0..N {
             let a = [values[0][n], values[1][n], values[2][n]];
             // Values in 0..=65535 (`u8` channels, `u16` depths): every
@@ -421,22 +456,41 @@ impl<const N: usize> Linear<N> {
             base[n] = (a[0] << 32) + HALF;
             da[0][n] = i32::try_from(a[1] - a[0]).unwrap_or_default();
             da[1][n] = i32::try_from(a[2] - a[0]).unwrap_or_default();
-            // d w_k / dx per pixel: 4096 (y_(k+1) - y_(k+2)); the raw `y`
-            // differences are below 2^33, so the sum is below 3 2^49.
-            let num: i64 = (0..3)
-                .map(|k| a[k] * (p[(k + 1) % 3].1 - p[(k + 2) % 3].1))
-                .sum();
+        }
+        let mut linear = Self {
+            base,
+            da,
+            step: [0; N],
+            moves: None,
+        };
+        linear.moves = frame
+            .lambda_steps
+            .map(|[column, row]| [linear.offset(column), linear.offset(row)]);
+        for n in 0..N {
+            let d = match linear.moves {
+                // Rounded from 20.44 (below 2^62 + 2^32 in magnitude):
+                // within 2^-33 + 2^-43 of exact (module docs).
+                Some([column, _]) => Some((column[n] + (1 << 11)) >> 12),
+                None => {
+                    let a = [values[0][n], values[1][n], values[2][n]];
+                    // d w_k / dx per pixel: 4096 (y_(k+1) - y_(k+2)); the
+                    // raw `y` differences are below 2^33, so the sum is
+                    // below 3 2^49.
+                    let num: i64 = (0..3)
+                        .map(|k| a[k] * (p[(k + 1) % 3].1 - p[(k + 2) % 3].1))
+                        .sum();
+                    frame
+                        .round(i128::from(num) << 44)
+                        .and_then(|d| i64::try_from(d).ok())
+                }
+            };
             // A step over `2^48` (65536 units per pixel) cannot occur on a
             // span of two or more pixels (module docs): it is never used,
             // and is stored as 0 so that every sum below stays far inside
             // `i64`.
-            step[n] = frame
-                .round(i128::from(num) << 44)
-                .and_then(|d| i64::try_from(d).ok())
-                .filter(|d| d.unsigned_abs() <= 1 << 48)
-                .unwrap_or(0);
+            linear.step[n] = d.filter(|d| d.unsigned_abs() <= 1 << 48).unwrap_or(0);
         }
-        Self { base, da, step }
+        linear
     }
 
     /// `da_1 l_1 + da_2 l_2` for `l` in `2^-60` units, in `2^-44` units
@@ -494,10 +548,18 @@ impl Linear<3> {
         let [b0, b1, b2] = self.base;
         let [[d0, d1, d2], [e0, e1, e2]] = self.da;
         let [s0, s1, s2] = self.step;
+        // Both from the same frame: both or neither have moves.
+        let moves = match (self.moves, z.moves) {
+            (Some([[c0, c1, c2], [r0, r1, r2]]), Some([[zc], [zr]])) => {
+                Some([[c0, c1, c2, zc], [r0, r1, r2, zr]])
+            }
+            _ => None,
+        };
         Linear {
             base: [b0, b1, b2, z.base[0]],
             da: [[d0, d1, d2, z.da[0][0]], [e0, e1, e2, z.da[1][0]]],
             step: [s0, s1, s2, z.step[0]],
+            moves,
         }
     }
 }
@@ -1002,6 +1064,7 @@ mod tests {
                 base: [0],
                 da: [[(a[1] - a[0]) as i32], [(a[2] - a[0]) as i32]],
                 step: [0],
+                moves: None,
             };
             let wide = |v: i64| i128::from(v);
             let exact =
@@ -1060,8 +1123,8 @@ mod tests {
         Triangle::new(a, b, c)
     }
 
-    /// [`Frame::lambdas_at`] and [`Frame::lambda_steps`] against their
-    /// definitions ([`reference`], and the difference of the weights a
+    /// [`Frame::lambdas_at`] and [`Frame::lambda_steps_by_division`]
+    /// against their definitions ([`reference`], and the difference of the weights a
     /// pixel apart divided by the host's own division), on random
     /// triangles of every size and slivers.
     #[test]
@@ -1089,7 +1152,7 @@ mod tests {
                 [0, 1].map(|k: usize| round((p[k].0 - p[(k + 2) % 3].0) << 72)),
             ];
             let within = exact.iter().flatten().all(|s| s.unsigned_abs() < 1 << 61);
-            match frame.lambda_steps() {
+            match frame.lambda_steps_by_division() {
                 Some(s) => {
                     assert!(within, "{t:?}");
                     assert_eq!(s.map(|s| s.map(i128::from)), exact, "{t:?}");
@@ -1104,6 +1167,50 @@ mod tests {
         assert!(
             steps > 2 * refused && refused > 0,
             "{steps} set up, {refused} refused"
+        );
+    }
+
+    /// Each attribute's step a pixel right in 32.32 ([`Linear::new`])
+    /// against the exact `2^32 4096 sum(a_k (y_(k+1) - y_(k+2))) / D`:
+    /// within `2^-33 + 2^-43` (module docs), whether made from the
+    /// frame's steps of `L_1, L_2` or, for a triangle under a pixel tall
+    /// or a sliver, divided for; random values across `0..=65535`.
+    #[test]
+    fn pixel_steps_within_their_bound() {
+        let (mut derived, mut divided) = (0, 0);
+        for_random_triangles(0x57E9_5EED_0003_2026, 20_000, 21, |t, frame, next| {
+            let values = [0; 3].map(|_| [0; 3].map(|_| (next() % 65536) as i64));
+            let linear = Linear::new(&frame, values);
+            let p = t.vertices.map(|v| {
+                let (x, y) = v.raw();
+                (i128::from(x), i128::from(y))
+            });
+            let d = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[1].1 - p[0].1) * (p[2].0 - p[0].0);
+            for n in 0..3 {
+                let num: i128 = (0..3)
+                    .map(|k| i128::from(values[k][n]) * (p[(k + 1) % 3].1 - p[(k + 2) % 3].1))
+                    .sum();
+                let step = i128::from(linear.step[n]);
+                // Stored as 0 past 2^48 (never used).
+                if step == 0 && (num << 44).abs() > d.abs() << 48 {
+                    continue;
+                }
+                // |step - 2^44 num / D| <= 1/2 + 2^-11, times 2^11 |D|.
+                let error = (step * d - (num << 44)) * d.signum() * (1 << 11);
+                assert!(
+                    error.abs() <= ((1 << 10) + 1) * d.abs(),
+                    "{t:?} {values:?}, channel {n}: off by {}",
+                    error as f64 / d.abs() as f64 / 2048.0,
+                );
+            }
+            match linear.moves {
+                Some(_) => derived += 1,
+                None => divided += 1,
+            }
+        });
+        assert!(
+            derived > divided && divided > 1_000,
+            "{derived} made from the steps of L_k, {divided} divided for"
         );
     }
 
