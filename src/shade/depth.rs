@@ -295,15 +295,16 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, FilledTriangle<C>> {
     where
         D: DrawTarget<Color = C>,
     {
-        let (Some(clip), Some(frame)) = (
-            self.depth.clip(&target.bounding_box()),
-            Frame::new(&self.shaded.triangle),
-        ) else {
+        // Borrowed where it was made: moved out of its `Option`, the frame
+        // was copied by `memcpy` on a Cortex-M4.
+        let frame = Frame::new(&self.shaded.triangle);
+        let (Some(clip), Some(frame)) = (self.depth.clip(&target.bounding_box()), frame.as_ref())
+        else {
             return Ok(());
         };
-        let z = depth_setup(&frame, self.z);
+        let z = depth_setup(frame, self.z);
         let color = self.shaded.color;
-        let mut starts = SpanStarts::<1, 1>::new(&frame, &z);
+        let mut starts = SpanStarts::<1, 1>::new(frame, &z);
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
             let [z0] = starts.at(span.x_start, span.y);
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
@@ -326,18 +327,19 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, GouraudTriangle<C>> {
     where
         D: DrawTarget<Color = C>,
     {
-        let (Some(clip), Some(setup)) = (
-            self.depth.clip(&target.bounding_box()),
-            GouraudSetup::new(&self.shaded),
-        ) else {
+        // Each borrowed where it was made: moved out of their `Option`s,
+        // the frame and the setup were copied by `memcpy` on a Cortex-M4.
+        let setup = GouraudSetup::new(&self.shaded);
+        let (Some(clip), Some(setup)) = (self.depth.clip(&target.bounding_box()), setup.as_ref())
+        else {
             return Ok(());
         };
-        let frame = setup.frame;
-        let z = depth_setup(&frame, self.z);
+        let frame = &setup.frame;
+        let z = depth_setup(frame, self.z);
         let both = setup.linear.and_depth(&z);
         // The colours and the depth apart: the colours are those of the
         // triangle drawn without depth.
-        let mut starts = SpanStarts::<4, 3>::new(&frame, &both);
+        let mut starts = SpanStarts::<4, 3>::new(frame, &both);
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
             let [r, g, b, z0] = starts.at(span.x_start, span.y);
             let start = [r, g, b];

@@ -939,7 +939,9 @@ impl<C: ShadeColor> GouraudTriangle<C> {
         clip: &embedded_graphics_core::primitives::Rectangle,
         mut f: impl FnMut(Span, &mut dyn Iterator<Item = C>) -> Result<(), E>,
     ) -> Result<(), E> {
-        let Some(setup) = GouraudSetup::new(self) else {
+        // Borrowed where it was returned (see `draw`).
+        let setup = GouraudSetup::new(self);
+        let Some(setup) = setup.as_ref() else {
             return Ok(());
         };
         let mut starts = SpanStarts::<3, 3>::new(&setup.frame, &setup.linear);
@@ -972,7 +974,10 @@ impl<C: ShadeColor> Drawable for GouraudTriangle<C> {
     where
         D: DrawTarget<Color = C>,
     {
-        let Some(setup) = GouraudSetup::new(self) else {
+        // Borrowed where it was returned: moved out of its `Option`, the
+        // setup was copied by `memcpy` on a Cortex-M4.
+        let setup = GouraudSetup::new(self);
+        let Some(setup) = setup.as_ref() else {
             return Ok(());
         };
         let clip = target.bounding_box();
