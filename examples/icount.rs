@@ -434,6 +434,62 @@ mod target {
         n
     }
 
+    /// `sin` and `cos` of `a` radians (`|a| <= pi`) by their Taylor
+    /// series to the 18th power, within 1e-7: enough to place a corner
+    /// (`core` has no `sin`).
+    fn sin_cos(a: f64) -> (f64, f64) {
+        let (mut sin, mut cos, mut term) = (0.0, 0.0, 1.0);
+        for k in 0..19 {
+            match k % 4 {
+                0 => cos += term,
+                1 => sin += term,
+                2 => cos -= term,
+                _ => sin -= term,
+            }
+            term *= a / f64::from(k + 1);
+        }
+        (sin, cos)
+    }
+
+    /// `count` (at most 64) random fat triangles `size` px across, as the
+    /// host's pools (`benches/common/pools.rs`): corners on a circle of
+    /// diameter `size` around a random centre that keeps them on the
+    /// screen, 120 degrees apart give or take 30, at fractional (1/4096
+    /// px) positions.
+    fn fat_triangles(
+        seed: u32,
+        size: f64,
+        count: usize,
+        out: &mut [(Triangle, Rgb565); 64],
+    ) -> usize {
+        const TAU: f64 = core::f64::consts::TAU;
+        let mut rng = builtin_scene::Rng::new(seed);
+        let mut unit = || f64::from(rng.next_u32()) / 4_294_967_296.0;
+        let (r, n) = (size / 2.0, count.min(64));
+        let margin = r + 1.0;
+        // On the screen, so positive: truncating `+ 0.5` rounds.
+        let raw = |px: f64| (px * 4096.0 + 0.5) as i32;
+        for t in &mut out[..n] {
+            let cx = margin + unit() * (320.0 - 2.0 * margin);
+            let cy = margin + unit() * (240.0 - 2.0 * margin);
+            let a0 = unit() * TAU;
+            let corner = |k: f64, jitter: f64| {
+                let mut a = a0 + k * TAU / 3.0 + (jitter - 0.5);
+                while a > core::f64::consts::PI {
+                    a -= TAU;
+                }
+                let (sin, cos) = sin_cos(a);
+                Vertex::from_raw(raw(cx + r * cos), raw(cy + r * sin))
+            };
+            let (j0, j1, j2) = (unit(), unit(), unit());
+            *t = (
+                Triangle::new(corner(0.0, j0), corner(1.0, j1), corner(2.0, j2)),
+                BLUE,
+            );
+        }
+        n
+    }
+
     /// The band buffers of 16 and 8 rows.
     type Band16 = Band<16, { buffer_size::<Rgb565Le>(320, 16) }>;
     type Band8 = Band<8, { buffer_size::<Rgb565Le>(320, 8) }>;
@@ -529,12 +585,38 @@ mod target {
             batch,
             false,
         );
+        // Random fat triangles with fractional corners, as the host's pools.
+        for (seed, size, count, label) in [
+            (1, 4.0, 64, "random, 4 px across"),
+            (2, 16.0, 64, "random, 16 px across"),
+            (3, 64.0, 16, "random, 64 px across"),
+        ] {
+            let n = fat_triangles(seed, size, count, &mut ts);
+            let batch = Batch::Triangles(&ts[..n]);
+            row(
+                &mut counter,
+                FB,
+                RECTS,
+                "flat triangles",
+                label,
+                batch,
+                false,
+            );
+        }
 
         // Gouraud-shaded triangles (through `draw`: each span one
         // `fill_contiguous` of its colours), against a flat fill of the
         // same spans.
         for (size, count, label) in [(16, 64, "16 px"), (64, 15, "64 px")] {
             let n = tiles(size, count, &mut ts);
+            let (batch, group) = (Batch::Gouraud(&ts[..n]), "Gouraud triangles");
+            row(&mut counter, FB, RECTS, group, label, batch, false);
+        }
+        for (seed, size, count, label) in [
+            (2, 16.0, 64, "random, 16 px across"),
+            (3, 64.0, 16, "random, 64 px across"),
+        ] {
+            let n = fat_triangles(seed, size, count, &mut ts);
             let (batch, group) = (Batch::Gouraud(&ts[..n]), "Gouraud triangles");
             row(&mut counter, FB, RECTS, group, label, batch, false);
         }
