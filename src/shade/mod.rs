@@ -19,13 +19,14 @@
 //! (the very same spans as the flat triangle: [`Triangle::for_each_span`])
 //! are shaded as follows:
 //!
-//! - per triangle at least a pixel tall, the steps of `L_k = 2^60 w_k / D`
-//!   (below) a column right and a row down, rounded: four `i128`
-//!   divisions shared by every attribute; from them, each attribute's
+//! - per triangle that crosses two rows of pixel centres or more, the
+//!   steps of `L_k = 2^60 w_k / D` (below) a column right and a row
+//!   down, rounded: four `i128` divisions shared by every attribute;
+//!   from them, each attribute's
 //!   steps a column right and a row down in 20.44 fixed point (`2^44` times
 //!   `(a_1 - a_0) dL_1 + (a_2 - a_0) dL_2`, rounded), and its step per
 //!   pixel `d` in 32.32, the column step rounded to `2^-32`. A triangle
-//!   under a pixel tall has one span: its `d = round(2^32 * 4096 *
+//!   that crosses one row has one span: its `d = round(2^32 * 4096 *
 //!   sum(a_k (y_(k+1) - y_(k+2))) / D)`, one `i128` division per
 //!   attribute;
 //! - per span, the value at its first pixel centre `p`, from `2^44 (a(p) -
@@ -110,7 +111,7 @@ pub(crate) struct Frame {
     /// by (`SpanStarts`, `Linear`), prepared once.
     divisor: Divisor,
     /// The steps of `L_1, L_2` a column right and a row down, for a
-    /// triangle at least a pixel tall
+    /// triangle that crosses two rows of pixel centres or more
     /// ([`lambda_steps_by_division`](Self::lambda_steps_by_division)):
     /// every attribute's steps are made from them.
     lambda_steps: Option<[[i64; 2]; 2]>,
@@ -133,12 +134,20 @@ impl Frame {
             divisor,
             lambda_steps: None,
         };
-        // Under a pixel tall, a triangle crosses one row of pixel centres
-        // at most: it has one span, and nothing to step. Its attributes'
-        // per-pixel steps take a division each instead of the four here.
+        // A triangle that crosses one row of pixel centres at most has one
+        // span, and nothing to step: its attributes' per-pixel steps take
+        // a division each instead of the four here. It crosses the row of
+        // centre `4096 k + 2048` iff `low <= 4096 k + 2048 < high`, so its
+        // first row is `ceil((low - 2048) / 4096)` and the row after its
+        // last `ceil((high - 2048) / 4096)` (raw coordinates are far below
+        // 2^62: exact). Two pixels tall or more, it crosses two rows: the
+        // rows are only counted below that.
         let ys = p.map(|p| p.1);
         if let (Some(low), Some(high)) = (ys.into_iter().min(), ys.into_iter().max()) {
-            if high - low >= 4096 {
+            let row_at_or_below = |y: i64| (y - 2048 + 4095) >> 12;
+            let tall = high - low >= 2 * 4096
+                || (high - low >= 4096 && row_at_or_below(high) - row_at_or_below(low) >= 2);
+            if tall {
                 frame.lambda_steps = frame.lambda_steps_by_division();
             }
         }
@@ -1134,8 +1143,8 @@ mod tests {
     /// each attribute's step a pixel right in 32.32 ([`Linear::new`])
     /// against the exact `2^32 4096 sum(a_k (y_(k+1) - y_(k+2))) / D`:
     /// within `2^-33 + 2^-43` (module docs), whether made from the
-    /// frame's steps of `L_1, L_2` or, for a triangle under a pixel tall
-    /// or a sliver, divided for; on random triangles of every size and
+    /// frame's steps of `L_1, L_2` or, for a triangle that crosses one
+    /// row of pixel centres or none, or a sliver, divided for; on random triangles of every size and
     /// slivers, with random values across `0..=65535`.
     #[test]
     fn steps_match_their_definitions() {
@@ -1199,6 +1208,35 @@ mod tests {
         assert!(
             steps > 2 * refused && refused > 0 && derived * 2 > steps,
             "{steps} set up, {refused} refused, {derived} steps a pixel right made from them"
+        );
+    }
+
+    /// A frame has the steps of `L_1, L_2` exactly when its triangle
+    /// crosses two rows of pixel centres or more (and the steps are
+    /// within their bound): the rows counted one by one here. On random
+    /// triangles up to 16 px across, slivers among them.
+    #[test]
+    fn steps_only_for_two_rows_or_more() {
+        let (mut one, mut more) = (0, 0);
+        for_random_triangles(0x5EED_0F20_0005, 20_000, 4, |t, frame, _| {
+            let ys = t.vertices.map(|v| i64::from(v.raw().1));
+            let (low, high) = (ys.iter().min().unwrap(), ys.iter().max().unwrap());
+            let rows = (low.div_euclid(4096) - 1..=high.div_euclid(4096) + 1)
+                .filter(|k| (*low..*high).contains(&(4096 * k + 2048)))
+                .count();
+            let expected = match rows >= 2 {
+                true => frame.lambda_steps_by_division(),
+                false => None,
+            };
+            assert_eq!(frame.lambda_steps, expected, "{t:?}: {rows} rows");
+            match rows >= 2 {
+                true => more += 1,
+                false => one += 1,
+            }
+        });
+        assert!(
+            one > 1000 && more > 1000,
+            "{one} of one row or none, {more} of more"
         );
     }
 
