@@ -490,6 +490,28 @@ fn product_by_halves(a: u64, b: u64) -> u128 {
     (u128::from(product_u32(a1, b1)) << 64) + (middle << 32) + u128::from(product_u32(a0, b0))
 }
 
+/// `a b` for factors the caller shows below `2^32` (checked in debug
+/// builds): where a 64-bit product is a library call
+/// (`narrow_multiplier`), four 16 by 16-bit products ([`product_u32`]);
+/// elsewhere the plain product.
+///
+/// Only there: on a Cortex-M4 (`.ci/itrace`) one `umull` in place of the
+/// plain product's three multiplies saved nothing once the factors were
+/// tested for size (the 3 px line 5,268 → 5,276 instructions, 64 random
+/// short thick lines 183,429 → 183,941).
+#[inline(always)]
+pub(crate) fn short_product(a: u64, b: u64) -> u64 {
+    debug_assert!(a >> 32 == 0 && b >> 32 == 0, "{a} {b}");
+    match cfg!(narrow_multiplier) {
+        // Within u32 (the caller's bound): the saturation never acts.
+        true => product_u32(
+            u32::try_from(a).unwrap_or(u32::MAX),
+            u32::try_from(b).unwrap_or(u32::MAX),
+        ),
+        false => a * b,
+    }
+}
+
 /// `a b` in full: one `umull` on a core that has it.
 #[cfg(not(narrow_multiplier))]
 #[inline(always)]
@@ -717,7 +739,8 @@ fn isqrt_62_by_step(n: u64) -> u64 {
     let r = n - (u64::from(a * a) << 30);
     let q = u32::try_from(r >> 16).unwrap_or(u32::MAX) / a.max(1);
     let s = (u64::from(a) << 15) + u64::from(q);
-    match s * s > n {
+    // s below 2^32 (2^31 plus a quotient below 2^31 / 2^15).
+    match short_product(s, s) > n {
         true => s - 1,
         false => s,
     }
@@ -739,12 +762,15 @@ fn isqrt_62_by_step(n: u64) -> u64 {
 /// `2^63`.
 fn reciprocal_62(s: u64) -> u64 {
     let top = u32::try_from(s >> 15).unwrap_or(u32::MAX - 1) + 1;
+    // Every factor below 2^32: s below 2^31, y at most 2^62 / s < 2^32,
+    // e below 2^48 (y within 2^-14 of 2^62 / s, so e < 2^62 2^-14), so e
+    // / 2^18 below 2^30.
     let mut y = u64::from(u32::MAX / top) << 15;
     for _ in 0..2 {
-        let e = (1 << 62) - s * y;
-        y += (y * (e >> 18)) >> 44;
+        let e = (1 << 62) - short_product(s, y);
+        y += short_product(y, e >> 18) >> 44;
     }
-    let mut rem = ((1 << 62) - 1) - s * y;
+    let mut rem = ((1 << 62) - 1) - short_product(s, y);
     while rem >= s {
         y += 1;
         rem -= s;
@@ -804,14 +830,16 @@ impl OverLength {
         if let Some((len2, k, inv)) = self.prepared {
             if a < 1 << (57 - k) {
                 let x = a << k;
-                // x inv / 2^56, floored, from two 32 by 32-bit products:
-                // below 2^57 and 2^64.
-                let (hi, lo) = ((x >> 32) * inv, (x & 0xFFFF_FFFF) * inv);
+                // x inv / 2^56, floored, from two 32 by 32-bit products
+                // (inv below 2^32): below 2^57 and 2^64.
+                let hi = short_product(x >> 32, inv);
+                let lo = short_product(x & 0xFFFF_FFFF, inv);
                 let sixty_fourths = (hi + (lo >> 32)) >> 24;
                 let r0 = (sixty_fourths + 24) >> 6;
                 let t = 2 * r0 + 1;
                 let up = match a < 1 << 30 && len2 < 1 << 60 {
-                    true => t * t * len2 <= 4 * a * a,
+                    // t below 2^29 (r0 at most a / sqrt(len2) < 2^27).
+                    true => short_product(t, t) * len2 <= short_product(a, a) << 2,
                     false => {
                         let t = u128::from(t);
                         t * t * u128::from(len2) <= 4 * u128::from(a) * u128::from(a)

@@ -36,7 +36,7 @@
 
 use super::{Join, MITER_LIMIT};
 use crate::{
-    raster::wide::{isqrt_u64, round_div, OverLength, Wide},
+    raster::wide::{isqrt_u64, round_div, short_product, OverLength, Wide},
     vertex::Vertex,
 };
 
@@ -448,11 +448,12 @@ impl Segment {
         let d = sub(self.b, self.a);
         let shift = (d.0 | d.1).trailing_zeros().min(63);
         let d = [d.0 >> shift, d.1 >> shift];
-        let square = |c: i64| u128::from(c.unsigned_abs() * c.unsigned_abs());
+        let square = |c: i64| u128::from(short_product(c.unsigned_abs(), c.unsigned_abs()));
         let over_length = OverLength::new(square(d[0]) + square(d[1]));
         move |i, f| {
             let c = d[i & 1];
-            let scaled = over_length.rounded(c.unsigned_abs() * f.unsigned_abs());
+            // f below 2^27 (2048 w, w <= 65535).
+            let scaled = over_length.rounded(short_product(c.unsigned_abs(), f.unsigned_abs()));
             // At most |f|: it fits.
             let scaled = i64::try_from(scaled).unwrap_or_default();
             if c < 0 {
