@@ -592,16 +592,8 @@ mod target {
             (3, 64.0, 16, "random, 64 px across"),
         ] {
             let n = fat_triangles(seed, size, count, &mut ts);
-            let batch = Batch::Triangles(&ts[..n]);
-            row(
-                &mut counter,
-                FB,
-                RECTS,
-                "flat triangles",
-                label,
-                batch,
-                false,
-            );
+            let (batch, group) = (Batch::Triangles(&ts[..n]), "flat triangles");
+            row(&mut counter, FB, RECTS, group, label, batch, false);
         }
 
         // Gouraud-shaded triangles (through `draw`: each span one
