@@ -739,7 +739,8 @@ fn isqrt_62_by_step(n: u64) -> u64 {
     let r = n - (u64::from(a * a) << 30);
     let q = u32::try_from(r >> 16).unwrap_or(u32::MAX) / a.max(1);
     let s = (u64::from(a) << 15) + u64::from(q);
-    // s below 2^32 (2^31 plus a quotient below 2^31 / 2^15).
+    // s below 2^32: 2^15 a below 2^31, q at most 2^16 (r below (2 a + 1)
+    // 2^30).
     match short_product(s, s) > n {
         true => s - 1,
         false => s,

@@ -1144,8 +1144,9 @@ mod tests {
     /// against the exact `2^32 4096 sum(a_k (y_(k+1) - y_(k+2))) / D`:
     /// within `2^-33 + 2^-43` (module docs), whether made from the
     /// frame's steps of `L_1, L_2` or, for a triangle that crosses one
-    /// row of pixel centres or none, or a sliver, divided for; on random triangles of every size and
-    /// slivers, with random values across `0..=65535`.
+    /// row of pixel centres or none, or a sliver, divided for; on random
+    /// triangles of every size and slivers, with random values across
+    /// `0..=65535`.
     #[test]
     fn steps_match_their_definitions() {
         let (mut steps, mut refused, mut derived) = (0, 0, 0);
