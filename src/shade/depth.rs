@@ -305,8 +305,13 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, FilledTriangle<C>> {
         let z = depth_setup(frame, self.z);
         let color = self.shaded.color;
         let mut starts = SpanStarts::<1, 1>::new(frame, &z);
+        // Rows above the clip are passed to the starts only (`shaded_spans`).
+        let top = clip.top_left.y;
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
             let [z0] = starts.at(span.x_start, span.y);
+            if span.y < top {
+                return Ok(());
+            }
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
                 let run = Span {
                     y: span.y,
@@ -340,8 +345,13 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, GouraudTriangle<C>> {
         // The colours and the depth apart: the colours are those of the
         // triangle drawn without depth.
         let mut starts = SpanStarts::<4, 3>::new(frame, &both);
+        // Rows above the clip are passed to the starts only (`shaded_spans`).
+        let top = clip.top_left.y;
         shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
             let [r, g, b, z0] = starts.at(span.x_start, span.y);
+            if span.y < top {
+                return Ok(());
+            }
             let start = [r, g, b];
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
                 let run = Span {

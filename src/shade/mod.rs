@@ -315,8 +315,9 @@ impl<'a, const N: usize, const SPLIT: usize> SpanStarts<'a, N, SPLIT> {
     /// else by division; `true` if it stepped.
     #[inline(always)]
     fn move_to(&mut self, x: i32, y: i32) -> bool {
+        // Divided for at the rows `shaded_spans` starts from.
         let dx = match self.last {
-            Some((lx, ly)) if ly.checked_add(1) == Some(y) => x
+            Some((lx, ly)) if ly.checked_add(1) == Some(y) && y & (DIVIDED_ROWS - 1) != 0 => x
                 .checked_sub(lx)
                 .filter(|dx| dx.unsigned_abs() <= STEPPED_COLUMNS),
             _ => None,
@@ -954,26 +955,57 @@ impl<C: ShadeColor> GouraudTriangle<C> {
             return Ok(());
         };
         let mut starts = SpanStarts::<3, 3>::new(&setup.frame, &setup.linear);
+        // Rows above the clip are passed to the starts only (`shaded_spans`).
+        let top = clip.top_left.y;
         shaded_spans(&self.triangle, clip, &mut |span| {
             let start = starts.at(span.x_start, span.y);
-            f(span, &mut setup.ramp(start, 0, span.len()))
+            match span.y < top {
+                true => Ok(()),
+                false => f(span, &mut setup.ramp(start, 0, span.len())),
+            }
         })
     }
 }
 
-/// `triangle`'s spans inside `clip`, through one copy of the triangle
-/// walk for every kind of shading (one per error type), not one per
-/// caller's closure: a shaded span costs far more than the call through
-/// the `dyn` reference, while each copy of the walk (`triangle_spans`
-/// and its rows' loops) took about 2.2 KB of flash on a Cortex-M4.
+/// `triangle`'s spans inside `clip`, after those of the rows above it
+/// from the last row at or above its top that [`SpanStarts`] divides at
+/// ([`DIVIDED_ROWS`]), which the caller passes to its starts but does
+/// not draw (`span.y < clip.top_left.y`): so the span starts are stepped
+/// along the same path whatever the clip's top, and a frame drawn in
+/// bands is the frame drawn whole, byte for byte (a start stepped to and
+/// one divided for may round apart within `2^-12` of a half).
+///
+/// Through one copy of the triangle walk for every kind of shading (one
+/// per error type), not one per caller's closure: a shaded span costs far
+/// more than the call through the `dyn` reference, while each copy of the
+/// walk (`triangle_spans` and its rows' loops) took about 2.2 KB of flash
+/// on a Cortex-M4.
 #[inline(never)]
 pub(crate) fn shaded_spans<E>(
     triangle: &Triangle,
     clip: &embedded_graphics_core::primitives::Rectangle,
     f: &mut dyn FnMut(Span) -> Result<(), E>,
 ) -> Result<(), E> {
-    triangle.for_each_span(clip, f)
+    use embedded_graphics_core::{
+        geometry::{Point, Size},
+        primitives::Rectangle,
+    };
+    if clip.is_zero_sized() {
+        return Ok(());
+    }
+    let top = clip.top_left.y;
+    // At most `DIVIDED_ROWS - 1` rows above `top`: no overflow.
+    let from = top & !(DIVIDED_ROWS - 1);
+    let lead = (top - from).unsigned_abs();
+    let size = Size::new(clip.size.width, clip.size.height.saturating_add(lead));
+    let extended = Rectangle::new(Point::new(clip.top_left.x, from), size);
+    triangle.for_each_span(&extended, f)
 }
+
+/// The rows `y` (multiples of this) at which [`SpanStarts`] divides for
+/// the start of a span rather than stepping to it, and from which
+/// [`shaded_spans`] walks.
+const DIVIDED_ROWS: i32 = 32;
 
 impl<C: ShadeColor> Drawable for GouraudTriangle<C> {
     type Color = C;
@@ -991,9 +1023,14 @@ impl<C: ShadeColor> Drawable for GouraudTriangle<C> {
         };
         let clip = target.bounding_box();
         let mut starts = SpanStarts::<3, 3>::new(&setup.frame, &setup.linear);
+        // Rows above the clip are passed to the starts only (`shaded_spans`).
+        let top = clip.top_left.y;
         shaded_spans(&self.triangle, &clip, &mut |span| {
             let start = starts.at(span.x_start, span.y);
-            target.fill_contiguous(&span.rect(), setup.ramp(start, 0, span.len()))
+            match span.y < top {
+                true => Ok(()),
+                false => target.fill_contiguous(&span.rect(), setup.ramp(start, 0, span.len())),
+            }
         })
     }
 }
