@@ -573,6 +573,16 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
     #[cfg_attr(not(target_arch = "arm"), inline(always))]
     #[cfg_attr(target_arch = "arm", inline)]
     fn fill_solid(&mut self, area: &Rectangle, color: F::Color) -> Result<(), Infallible> {
+        // One row inside the buffer, as `DrawTargetSink` sends spans (it
+        // has clipped them to the bounds): filled with no clipping. x86-64,
+        // random triangles through `draw`, instructions counted by
+        // callgrind: small 1,223 a triangle → 1,177, medium 4,153 →
+        // 3,807, large 14,777 → 13,540 (against clamping the row first
+        // and handing it to `fill_span`, as taller ones still are below).
+        if let Some((row, xs)) = self.row_inside(area) {
+            F::fill_span(row, xs, color);
+            return Ok(());
+        }
         if area.size.height == 1 {
             // One row, as `DrawTargetSink` sends spans: clipped as a span.
             // The row's columns inside `0..W`: both ends lie within
