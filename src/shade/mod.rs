@@ -1007,8 +1007,10 @@ pub(crate) fn shaded_spans<E>(
 
 /// The rows `y` (multiples of this) at which [`SpanStarts`] divides for
 /// the start of a span rather than stepping to it, and from which
-/// [`shaded_spans`] walks.
+/// [`shaded_spans`] walks. A power of two: both find its multiples by a
+/// mask.
 const DIVIDED_ROWS: i32 = 32;
+const _: () = assert!(DIVIDED_ROWS > 0 && DIVIDED_ROWS & (DIVIDED_ROWS - 1) == 0);
 
 impl<C: ShadeColor> Drawable for GouraudTriangle<C> {
     type Color = C;
