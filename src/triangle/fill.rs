@@ -9,9 +9,9 @@
 //! frame: exactly the pixels whose nudged centres are inside, the crate's
 //! sampling rule. Each edge steps in O(1) per row; nothing is searched,
 //! and nothing per pixel is done here at all: the sink fills the span.
-//! On hosts, a small triangle under four rows tall is walked in one loop
+//! On hosts, a small triangle under 24 rows tall is walked in one loop
 //! that takes each span between the lesser and the greater threshold,
-//! with no orientation ([`walk_tiny`]).
+//! with no orientation ([`walk_short`]).
 //!
 //! Widths: the whole setup and the stepping run in `i32` when the
 //! vertices lie within `2^29` raw units (131,072 px) of the frame's
@@ -65,7 +65,7 @@ pub(crate) fn triangle_spans<E>(
         true => place(&v, clip),
         false => match Frame::of_small_triangle(&v, clip) {
             // Relative coordinates within -4096..SMALL: no overflow.
-            Some((frame, p)) if p[2].1 - p[0].1 < TINY => return walk_tiny(&frame, p, &mut emit),
+            Some((frame, p)) if p[2].1 - p[0].1 < SHORT => return walk_short(&frame, p, &mut emit),
             Some((frame, p)) => Some(Placed::Narrow(frame, p, true)),
             None => place_checked(&v, clip),
         },
@@ -100,13 +100,13 @@ pub(crate) fn triangle_spans<E>(
 /// .ci/codesize`), for 16 px triangles 1,755 → 1,795 instructions, 4 px
 /// 736 → 753, the built-in scene 678,152 → 689,136 and in 16-row bands
 /// 1,104,540 → 1,182,112 (`.ci/icount`). The clamp alone: 9,080 bytes,
-/// 16 px 1,800, the scene 686,540. Dropping [`walk_tiny`] as well would
+/// 16 px 1,800, the scene 686,540. Dropping [`walk_short`] as well would
 /// save 976 bytes more, but took 4 px triangles to 919.
 const ONE_ROW_LOOP: bool = cfg!(target_arch = "arm") || cfg!(optimize_for_size);
 
 /// The height (raw units) under which a small triangle takes
-/// [`walk_tiny`] on hosts: four rows.
-const TINY: i32 = 4 << 12;
+/// [`walk_short`] on hosts: 24 rows.
+const SHORT: i32 = 24 << 12;
 
 /// Where a triangle is walked: its frame, and its vertices relative to it
 /// in `i32` if they fit.
@@ -258,7 +258,7 @@ fn narrow_edges(small: bool) -> impl Fn((i32, i32), (i32, i32)) -> Option<Edge<i
     }
 }
 
-/// The walk of a triangle under four rows tall framed by
+/// The walk of a triangle under 24 rows tall framed by
 /// [`Frame::of_small_triangle`] (`p` relative to it, sorted by `y`), on
 /// hosts: the same edges and spans as [`walk`], in one loop of its own.
 ///
@@ -267,16 +267,22 @@ fn narrow_edges(small: bool) -> impl Fn((i32, i32), (i32, i32)) -> Option<Edge<i
 /// as the lesser and the greater, with no orientation computed (a
 /// degenerate triangle's edges cross each row at the same point, and its
 /// spans are empty). The lower short edge takes over from the upper one
-/// inside the loop. For a triangle of a few rows this saves the
-/// orientation and the two calls into [`rows`](crate::raster::walk::rows) with their edges passed
-/// through memory: random 4 px triangles take about 10 % less time on
-/// x86-64 (the tiny pool of `benches/pools.rs`, median of 5 runs: 46 ns
-/// a triangle through [`walk`], 41 through this). Taller ones keep [`walk`], whose out-of-line row loop has
-/// registers to spare (this loop, holding a third vertex pair for the
-/// lower edge, was up to 18 % slower on 64 px triangles), and so does
-/// 32-bit ARM, where it cost more instructions than it saved.
+/// inside the loop. This saves the orientation and the two calls into
+/// [`rows`](crate::raster::walk::rows) with their edges passed through
+/// memory, for two selects a row: random 4 px triangles took about 10 %
+/// less time on x86-64 than through [`walk`] (the tiny pool of
+/// `benches/pools.rs`, median of 5 runs: 46 ns a triangle against 41),
+/// and since the height went from 4 rows to 24, the mesh's 10 px cells
+/// take 0.87x the time and small 16 px triangles 0.98x (`python3
+/// benches/pools_ab.py` against the commit before, medians of 11
+/// alternating runs, `draw_spans`; callgrind, instructions a triangle:
+/// mesh 953 → 917, small 1,066 → 1,041). Taller ones keep [`walk`],
+/// whose out-of-line row loop has registers to spare: with 80 rows, the
+/// 64 px pool took 1.09x the time (this loop holds a third vertex pair
+/// for the lower edge). 32-bit ARM keeps [`walk`] for all, where this
+/// loop cost more instructions than it saved.
 #[inline(always)]
-fn walk_tiny<E>(
+fn walk_short<E>(
     frame: &Frame,
     [a, b, c]: [(i32, i32); 3],
     emit: &mut impl FnMut(i32, i32, i32) -> Result<(), E>,
@@ -460,45 +466,51 @@ mod tests {
 
     use super::*;
 
-    /// [`walk_tiny`] against [`walk`] with the same small edges (the one
+    /// [`walk_short`] against [`walk`] with the same small edges (the one
     /// the hosts use for taller triangles, and 32-bit ARM for all): random
-    /// triangles up to five rows tall at 1/4096 px, in clips that cut
-    /// them on the right and at the bottom (a cut on the left or at the
-    /// top takes the checked frame, not these walks).
+    /// triangles at 1/4096 px, half of them up to 5 rows tall and half up
+    /// to 26 (past [`SHORT`]'s 24), in clips that cut them on the right
+    /// and at the bottom (a cut on the left or at the top takes the
+    /// checked frame, not these walks).
     #[test]
-    fn tiny_walk_matches_the_two_call_walk() {
+    fn short_walk_matches_the_two_call_walk() {
         let mut random = crate::raster::xorshift(0x9E37_79B9_7F4A_7C15);
         let mut next = |n: i32| (random.next().unwrap_or_default() % n as u64) as i32;
-        let mut lit = 0;
-        for _ in 0..60_000 {
+        let (mut lit, mut tall) = (0, 0);
+        for i in 0..80_000 {
+            let (w, h) = match i % 2 {
+                0 => (8, 5),
+                _ => (20, 26),
+            };
             let corner = |next: &mut dyn FnMut(i32) -> i32| {
-                Vertex::from_raw(40_960 + next(8 * 4096), 40_960 + next(5 * 4096))
+                Vertex::from_raw(40_960 + next(w * 4096), 40_960 + next(h * 4096))
             };
             let mut v = [corner(&mut next), corner(&mut next), corner(&mut next)];
             sort_by_y(&mut v);
             let clip = Rectangle::new(
                 Point::new(6 + next(6), 6 + next(6)),
-                Size::new(next(12) as u32, next(9) as u32),
+                Size::new(next(w + 4) as u32, next(h + 4) as u32),
             );
             let Some((frame, p)) = Frame::of_small_triangle(&v, &clip) else {
                 continue;
             };
-            let spans = |tiny: bool| {
-                let mut out = heapless::Vec::<Span, 8>::new();
+            let spans = |short: bool| {
+                let mut out = heapless::Vec::<Span, 32>::new();
                 let mut push = |s: Span| out.push(s).map_err(|_| ());
                 let mut push = by_numbers_ref(&mut push);
-                let _ = match tiny {
-                    true => walk_tiny(&frame, p, &mut push),
+                let _ = match short {
+                    true => walk_short(&frame, p, &mut push),
                     false => walk(&frame, p, narrow_edges(true), false, &mut push),
                 };
                 drop(push);
                 out
             };
-            let tiny = spans(true);
-            assert_eq!(tiny, spans(false), "{v:?} in {clip:?}");
-            lit += usize::from(!tiny.is_empty());
+            let short = spans(true);
+            assert_eq!(short, spans(false), "{v:?} in {clip:?}");
+            lit += usize::from(!short.is_empty());
+            tall += usize::from(short.len() > 12);
         }
-        assert!(lit > 10_000, "{lit}");
+        assert!(lit > 20_000 && tall > 2_000, "{lit} {tall}");
     }
 
     /// Both sorts, whichever the target uses, against the standard stable
