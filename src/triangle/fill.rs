@@ -300,25 +300,31 @@ fn walk_short<E>(
     };
     let mut row = 0;
     loop {
-        let (ts, tl) = (short.threshold(), long.threshold());
-        // No threshold lies left of the small frame (see `rows` without
-        // its left clamp).
-        let x0 = ts.min(tl);
-        debug_assert!(x0 >= 0);
-        emit_columns(frame, row, x0, ts.max(tl).min(frame.width), emit)?;
+        // The rows of this short edge, to the switch or the end.
+        let stop = switch.min(end);
+        loop {
+            let (ts, tl) = (short.threshold(), long.threshold());
+            // No threshold lies left of the small frame (see `rows`
+            // without its left clamp).
+            let x0 = ts.min(tl);
+            debug_assert!(x0 >= 0);
+            emit_columns(frame, row, x0, ts.max(tl).min(frame.width), emit)?;
+            if row == stop {
+                break;
+            }
+            long.step();
+            short.step();
+            row += 1;
+        }
         if row == end {
             return Ok(());
         }
         long.step();
-        if row == switch {
-            short = match Edge::new_small(b, c) {
-                Some(lower) => lower,
-                None => return Ok(()),
-            };
-            switch = i32::MAX;
-        } else {
-            short.step();
-        }
+        short = match Edge::new_small(b, c) {
+            Some(lower) => lower,
+            None => return Ok(()),
+        };
+        switch = i32::MAX;
         row += 1;
     }
 }
