@@ -266,21 +266,25 @@ fn narrow_edges(small: bool) -> impl Fn((i32, i32), (i32, i32)) -> Option<Edge<i
 /// span lies between their thresholds whichever side each is on: taken
 /// as the lesser and the greater, with no orientation computed (a
 /// degenerate triangle's edges cross each row at the same point, and its
-/// spans are empty). The lower short edge takes over from the upper one
-/// inside the loop. This saves the orientation and the two calls into
-/// [`rows`](crate::raster::walk::rows) with their edges passed through
-/// memory, for two selects a row: random 4 px triangles took about 10 %
-/// less time on x86-64 than through [`walk`] (the tiny pool of
-/// `benches/pools.rs`, median of 5 runs: 46 ns a triangle against 41),
-/// and since the height went from 4 rows to 24, the mesh's 10 px cells
-/// take 0.87x the time and small 16 px triangles 0.98x (`python3
+/// spans are empty). The lower short edge, set up when the upper one
+/// ends, takes over in the same function. This saves the orientation and
+/// the two calls into [`rows`](crate::raster::walk::rows) with their
+/// edges passed through memory, for two selects a row: random 4 px
+/// triangles took about 10 % less time on x86-64 than through [`walk`]
+/// (the tiny pool of `benches/pools.rs`, median of 5 runs: 46 ns a
+/// triangle against 41). Since the height went from 4 rows to 24, with
+/// one loop per short edge (a single test a row), the mesh's 10 px
+/// cells take 0.87x the time and small 16 px triangles 0.98x (`python3
 /// benches/pools_ab.py` against the commit before, medians of 11
-/// alternating runs, `draw_spans`; callgrind, instructions a triangle:
-/// mesh 953 → 917, small 1,066 → 1,041). Taller ones keep [`walk`],
-/// whose out-of-line row loop has registers to spare: with 80 rows, the
-/// 64 px pool took 1.09x the time (this loop holds a third vertex pair
-/// for the lower edge). 32-bit ARM keeps [`walk`] for all, where this
-/// loop cost more instructions than it saved.
+/// alternating runs, `draw_spans`); callgrind, instructions a triangle:
+/// tiny 450 → 438, small 1,066 → 972, the mesh 953 → 860. Taller ones
+/// keep [`walk`], whose out-of-line row loop has registers to spare:
+/// with 80 rows, the 64 px pool took 1.09x the time (this loop holds a
+/// third vertex pair for the lower edge). 32-bit ARM keeps [`walk`] for
+/// all: there this loop, inlined into the setup, spills (Cortex-M4,
+/// `.ci/icount`, with it for every small triangle under 24 rows: setup
+/// 268 → 228 instructions, but 16 px triangles 1,247 → 1,300, the mesh
+/// 1,566 → 1,679; 4 px 605 → 569).
 #[inline(always)]
 fn walk_short<E>(
     frame: &Frame,
