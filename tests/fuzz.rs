@@ -60,16 +60,39 @@ fn cases() -> u64 {
 }
 
 /// A generator for one target: `FUZZ_SEED` mixed with the target's salt.
-/// The lowest bit of the mix is set (a xorshift state must not be 0), so
-/// `FUZZ_SEED` values that differ only in their lowest bit give the same
-/// inputs: use even seeds (kept so that the runs recorded above can be
-/// repeated).
+/// The lowest bit of the mix is set (a xorshift state must not be 0). An
+/// even seed is mixed as it always was, so that the runs recorded above
+/// can be repeated; an odd one is scrambled first (a splitmix64 step), so
+/// that it does not give its even neighbour's inputs.
 fn rng(salt: u64) -> Rng {
     let seed: u64 = std::env::var("FUZZ_SEED")
         .ok()
         .and_then(|v| v.parse().ok())
         .unwrap_or(0x5eed_f00d_1234_5678);
-    Rng(seed ^ salt.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1)
+    Rng(mix(seed) ^ salt.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1)
+}
+
+/// `seed` itself if it is even; else a splitmix64 step of it, whose
+/// lowest bit then matters.
+fn mix(seed: u64) -> u64 {
+    if seed & 1 == 0 {
+        return seed;
+    }
+    let mut z = seed.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// Seeds that differ only in their lowest bit give different generators;
+/// even seeds the ones they gave before.
+#[test]
+fn odd_seeds_differ_from_even_ones() {
+    for seed in [0, 20261232, 0x5eed_f00d_1234_5678, u64::MAX - 1] {
+        assert_eq!(mix(seed), seed);
+        let (even, odd) = (mix(seed) | 1, mix(seed + 1) | 1);
+        assert_ne!(even, odd, "{seed}");
+    }
 }
 
 #[test]
