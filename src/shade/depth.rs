@@ -10,7 +10,8 @@ use embedded_graphics_core::{
 };
 
 use super::{
-    shaded_spans, whole, Frame, GouraudSetup, GouraudTriangle, Linear, ShadeColor, SpanStarts,
+    offset, shaded_spans, whole, Frame, GouraudSetup, GouraudTriangle, Linear, ShadeColor,
+    SpanStarts, Window,
 };
 use crate::{clip::Bounds, span::Span, triangle::FilledTriangle};
 
@@ -305,13 +306,15 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, FilledTriangle<C>> {
         let z = depth_setup(frame, self.z);
         let color = self.shaded.color;
         let mut starts = SpanStarts::<1, 1>::new(frame, &z);
-        // Rows above the clip are passed to the starts only (`shaded_spans`).
-        let top = clip.top_left.y;
-        shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
-            let [z0] = starts.at(span.x_start, span.y);
-            if span.y < top {
+        // Every row's values start at its whole span (`shaded_spans`).
+        let window = Window::of(&clip);
+        shaded_spans(&self.shaded.triangle, &clip, &mut |whole| {
+            let [z0] = starts.at(whole.x_start, whole.y);
+            let span = window.visible(whole);
+            if span.is_empty() {
                 return Ok(());
             }
+            let z0 = z.advanced(z0, 0, offset(whole, span));
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
                 let run = Span {
                     y: span.y,
@@ -345,21 +348,23 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, GouraudTriangle<C>> {
         // The colours and the depth apart: the colours are those of the
         // triangle drawn without depth.
         let mut starts = SpanStarts::<4, 3>::new(frame, &both);
-        // Rows above the clip are passed to the starts only (`shaded_spans`).
-        let top = clip.top_left.y;
-        shaded_spans(&self.shaded.triangle, &clip, &mut |span| {
-            let [r, g, b, z0] = starts.at(span.x_start, span.y);
-            if span.y < top {
+        // Every row's values start at its whole span (`shaded_spans`).
+        let window = Window::of(&clip);
+        shaded_spans(&self.shaded.triangle, &clip, &mut |whole| {
+            let [r, g, b, z0] = starts.at(whole.x_start, whole.y);
+            let span = window.visible(whole);
+            if span.is_empty() {
                 return Ok(());
             }
-            let start = [r, g, b];
+            let skip = offset(whole, span);
+            let (start, z0) = ([r, g, b], z.advanced(z0, 0, skip));
             self.depth.test_span(span, z0, z.step[0], |offset, len| {
                 let run = Span {
                     y: span.y,
                     x_start: span.x_start + offset as i32,
                     x_end: span.x_start + (offset + len) as i32,
                 };
-                target.fill_contiguous(&run.rect(), setup.ramp(start, offset, len))
+                target.fill_contiguous(&run.rect(), setup.ramp(start, skip + offset, len))
             })
         })
     }
