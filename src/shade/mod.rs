@@ -30,11 +30,15 @@
 //!   sum(a_k (y_(k+1) - y_(k+2))) / D)`, one `i128` division per
 //!   attribute;
 //! - per span, the value at its first pixel centre `p`, from `2^44 (a(p) -
-//!   a_0)` in 20.44 fixed point: at a triangle's first span (and at any
-//!   span more than a row below or 8 columns across from the last, or on
-//!   a row that is a multiple of 32, from which a triangle under a clip
-//!   is walked whatever the clip's top, so that its values do not depend
-//!   on where the clip's top lies: the same frame whole or in bands), from
+//!   a_0)` in 20.44 fixed point. The span is the row's whole span, not
+//!   cut by any clip, and a triangle under a clip is walked from a row
+//!   that is a multiple of 32 at or above the clip's top, so that its
+//!   values do not depend on the clip: the same pixels whole, in bands or
+//!   in any window (the part of a span inside the clip is drawn from its
+//!   offset into the whole span, the value that many single steps
+//!   reach). At a triangle's first span (and at any span more than a row
+//!   below or 8 columns across from the last, or on a row that is a
+//!   multiple of 32), from
 //!   `L_k = round(2^60 w_k(p) / D)` for `k = 1, 2`, two `i128` divisions
 //!   shared by every attribute, as `round(((a_1 - a_0) L_1 + (a_2 - a_0)
 //!   L_2) / 2^16)`; at the next span's first pixel, a
