@@ -221,16 +221,17 @@ impl Frame {
 }
 
 /// How many columns a span's first pixel may lie from the one of the
-/// span a row above for its values to be stepped to from there;
-/// farther, they are divided for.
+/// span a row above for its values to be stepped to from there by adds;
+/// farther, by one product per attribute ([`SpanStarts::step_by`]).
 const STEPPED_COLUMNS: u32 = 8;
 
 /// The values of `N` attributes at the first pixel of each span, for
 /// spans given top to bottom, in 32.32 fixed point with the `1/2` of
 /// their rounding (what [`Ramp`] and the depth test step from): divided
 /// for at a triangle's first span, then stepped from one span's first
-/// pixel to the next one's, a row down and at most [`STEPPED_COLUMNS`]
-/// across, with no division and no product of coordinates.
+/// pixel to the next one's, a row down and any number of columns across
+/// (by adds up to [`STEPPED_COLUMNS`], farther by a product), with no
+/// division and no product of coordinates.
 ///
 /// Each attribute is carried as `2^44 (a(p) - a_0) + 2^11` at the last
 /// span's first pixel `p` (its offset from vertex 0's value, in 20.44
@@ -318,15 +319,14 @@ impl<'a, const N: usize, const SPLIT: usize> SpanStarts<'a, N, SPLIT> {
     }
 
     /// Moves to pixel `(x, y)`, by a step from the last span's first pixel
-    /// when it lies a row above and at most [`STEPPED_COLUMNS`] across,
-    /// else by division; `true` if it stepped.
+    /// when it lies a row above, else by division; `true` if it stepped.
     #[inline(always)]
     fn move_to(&mut self, x: i32, y: i32) -> bool {
         // Divided for at the rows `shaded_spans` starts from.
         let dx = match self.last {
-            Some((lx, ly)) if ly.checked_add(1) == Some(y) && y & (DIVIDED_ROWS - 1) != 0 => x
-                .checked_sub(lx)
-                .filter(|dx| dx.unsigned_abs() <= STEPPED_COLUMNS),
+            Some((lx, ly)) if ly.checked_add(1) == Some(y) && y & (DIVIDED_ROWS - 1) != 0 => {
+                x.checked_sub(lx)
+            }
             _ => None,
         };
         let stepped = match dx {
@@ -354,9 +354,10 @@ impl<'a, const N: usize, const SPLIT: usize> SpanStarts<'a, N, SPLIT> {
         }
     }
 
-    /// Steps a row down and `dx` columns across (`|dx| <=
-    /// STEPPED_COLUMNS`), to `(x, y)`; `false` if the triangle's steps are
-    /// too large.
+    /// Steps a row down and `dx` columns across, to `(x, y)`; `false` if
+    /// the triangle's steps are too large, or a move of more than
+    /// [`STEPPED_COLUMNS`] leaves `i64` (it does not between two lit
+    /// pixels, but it is checked, not assumed).
     #[inline(always)]
     fn step_by(&mut self, dx: i32, x: i32, y: i32) -> bool {
         if let Steps::Unset = self.steps {
@@ -371,24 +372,43 @@ impl<'a, const N: usize, const SPLIT: usize> SpanStarts<'a, N, SPLIT> {
         else {
             return false;
         };
-        // |o| < 2^60 + 2^24 at the last lit pixel, |row| <= 2^60 and |dx|
-        // column steps at most 8 2^57 (struct docs): below 2^62 all the
-        // way.
         let (first, column) = match dx {
             ..0 => (&down[0], left),
             0 => (&down[1], right),
             1.. => (&down[2], right),
         };
-        for (o, step) in self.offset.iter_mut().zip(first) {
-            *o += step;
-        }
-        // Adds, not a product: on ARMv6-M a 64-bit product is a library
-        // call, and the first pixels of a triangle's spans mostly move by
-        // a column or none, which the diagonal steps of `down` take at
-        // once.
-        for _ in 1..dx.unsigned_abs() {
-            for (o, step) in self.offset.iter_mut().zip(column) {
+        let columns = dx.unsigned_abs();
+        if columns > STEPPED_COLUMNS {
+            // The diagonal step and `|dx| - 1` column steps more, as one
+            // product each: the same sum as that many adds, exactly.
+            let more = i64::from(columns - 1);
+            let mut moved = self.offset;
+            for ((o, diagonal), step) in moved.iter_mut().zip(first).zip(column) {
+                let sum = step
+                    .checked_mul(more)
+                    .and_then(|m| m.checked_add(*diagonal))
+                    .and_then(|m| o.checked_add(m));
+                match sum {
+                    Some(sum) => *o = sum,
+                    None => return false,
+                }
+            }
+            self.offset = moved;
+        } else {
+            // |o| < 2^60 + 2^24 at the last lit pixel, |row| <= 2^60 and
+            // |dx| column steps at most 8 2^57 (struct docs): below 2^62
+            // all the way.
+            for (o, step) in self.offset.iter_mut().zip(first) {
                 *o += step;
+            }
+            // Adds, not a product: on ARMv6-M a 64-bit product is a
+            // library call, and the first pixels of a triangle's spans
+            // mostly move by a column or none, which the diagonal steps of
+            // `down` take at once.
+            for _ in 1..columns {
+                for (o, step) in self.offset.iter_mut().zip(column) {
+                    *o += step;
+                }
             }
         }
         // A group whose steps are too large (stepped by 0 above); none
@@ -1382,7 +1402,8 @@ mod tests {
     /// `0..=65535` and random triangles with corners from 1 px to 2^18 px
     /// around a centre (slivers among them), in clip windows that cut
     /// them anywhere: spans a row apart whose starts move either way by up
-    /// to [`STEPPED_COLUMNS`] and more, rows skipped by thin triangles,
+    /// to [`STEPPED_COLUMNS`] (adds) and more (a product), rows skipped by
+    /// thin triangles,
     /// and the first span of each. Each is within the bound of
     /// [`SpanStarts`]' docs for the unit steps taken since the last
     /// division: `2^-43` a unit step and for the division, and `2^-32`
@@ -1414,7 +1435,7 @@ mod tests {
                 let (x, y) = (span.x_start, span.y);
                 let got = starts.at(x, y);
                 let near = last.and_then(|(lx, ly)| {
-                    (ly + 1 == y && lx.abs_diff(x) <= STEPPED_COLUMNS).then_some(lx.abs_diff(x))
+                    (ly + 1 == y).then_some(lx.abs_diff(x))
                 });
                 let moved = near.filter(|_| matches!(starts.steps, Steps::Set { .. }));
                 units = match moved {
