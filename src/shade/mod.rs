@@ -37,14 +37,14 @@
 //!   in any window (the part of a span inside the clip is drawn from its
 //!   offset into the whole span, the value that many single steps
 //!   reach). At a triangle's first span (and at any span more than a row
-//!   below or 8 columns across from the last, or on a row that is a
-//!   multiple of 32), from
+//!   below the last, or on a row that is a multiple of 32), from
 //!   `L_k = round(2^60 w_k(p) / D)` for `k = 1, 2`, two `i128` divisions
 //!   shared by every attribute, as `round(((a_1 - a_0) L_1 + (a_2 - a_0)
 //!   L_2) / 2^16)`; at the next span's first pixel, a
 //!   row down and `dx` columns across, by adding the attribute's row step
-//!   and `dx` times its column step, with no division and no product of
-//!   coordinates (`SpanStarts` in the source). Then `v = 2^32 a_0 +
+//!   and `dx` times its column step (up to 8 columns by adds, farther by
+//!   one product), with no division and no product of coordinates
+//!   (`SpanStarts` in the source). Then `v = 2^32 a_0 +
 //!   round(2^-12 * that) + 2^31`: the value in 32.32, plus the `1/2` of
 //!   its rounding, added once a span;
 //! - per pixel, one add `v += d` per attribute, and the output is `floor(v
