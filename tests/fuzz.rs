@@ -16,8 +16,10 @@
 //! thick lines and strokes over 1 px wide (polylines with every join,
 //! the outlines of the triangles and polygons) write no pixel twice, that
 //! a depth-tested triangle on a cleared depth buffer lights exactly the
-//! flat triangle's pixels, once each, and that a scene never writes more
-//! pixels than its cost estimate (`Scene::pixel_work`).
+//! flat triangle's pixels, once each, that a scene never writes more
+//! pixels than its cost estimate (`Scene::pixel_work`), and that a scene
+//! drawn in bands, or through a window that may cut its shapes on any
+//! side (embedded-graphics' `Clipped`), gives the whole scene's pixels.
 //!
 //! `FUZZ_CASES` sets the number of inputs per target (default 300, what CI
 //! runs) and `FUZZ_SEED` the generator's seed. The deep campaign, in the
@@ -138,7 +140,7 @@ fn fuzz_scenes() {
             fuzz_cases::scene(&text, &mut r)
         })
         .count();
-    println!("fuzz_scenes: {n} inputs, {parsed} parsed and rendered, whole and in bands");
+    println!("fuzz_scenes: {n} inputs, {parsed} parsed and rendered, whole, in bands and in a window");
 }
 
 #[test]

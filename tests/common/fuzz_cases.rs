@@ -4,6 +4,7 @@
 //! bytes. The includer declares the sibling modules `common`, `line_ref`,
 //! `rng` and `view`.
 
+use embedded_graphics::draw_target::DrawTargetExt;
 use embedded_graphics_core::{
     pixelcolor::{Bgr565, BinaryColor, Gray2, Gray4, Gray8, Rgb565, Rgb666, Rgb888, RgbColor},
     prelude::*,
@@ -605,6 +606,27 @@ pub fn scene(text: &str, r: &mut Rng) -> bool {
     let (a, b) = (&banded.display, &rendered.display);
     assert!(a.pixels() == b.pixels(), "bands of {rows}: {text}");
     assert!(a.counts() == b.counts(), "bands of {rows}: {text}");
+    // Through a window that may cut every shape on any side
+    // (embedded-graphics' `Clipped`): inside it, the whole image.
+    let size = scene.size();
+    let (w, h) = (i64::from(size.width), i64::from(size.height));
+    let at = |r: &mut Rng, n: i64| (r.below(n as u64 + 8) - 4) as i32;
+    let span = |r: &mut Rng, n: i64| r.below(n as u64 + 8) as u32;
+    let window = Rectangle::new(
+        Point::new(at(r, w), at(r, h)),
+        Size::new(span(r, w), span(r, h)),
+    );
+    let mut display = SimDisplay::new(size.width, size.height, Rgb888::BLACK);
+    for command in scene.commands() {
+        let Ok(()) = command.draw_with(&mut display.clipped(&window), algo, bits);
+    }
+    for p in window.points() {
+        assert_eq!(
+            display.pixel(p),
+            b.pixel(p),
+            "window {window:?} at {p:?}: {text}"
+        );
+    }
     true
 }
 
