@@ -140,7 +140,9 @@ fn fuzz_scenes() {
             fuzz_cases::scene(&text, &mut r)
         })
         .count();
-    println!("fuzz_scenes: {n} inputs, {parsed} parsed and rendered, whole, in bands and in a window");
+    println!(
+        "fuzz_scenes: {n} inputs, {parsed} parsed and rendered, whole, in bands and in a window"
+    );
 }
 
 #[test]
