@@ -1115,8 +1115,8 @@ impl Window {
 const DIVIDED_ROWS: i32 = 32;
 const _: () = assert!(DIVIDED_ROWS > 0 && DIVIDED_ROWS & (DIVIDED_ROWS - 1) == 0);
 
-/// How many pixels into the row's `whole` span its `visible` part starts
-/// (`shaded_spans` hands out the two, the part inside the whole).
+/// How many pixels into a row's `whole` span (from [`shaded_spans`]) its
+/// `visible` part ([`Window::visible`]) starts.
 #[inline(always)]
 fn offset(whole: Span, visible: Span) -> u32 {
     visible.x_start.abs_diff(whole.x_start)
