@@ -593,3 +593,42 @@ fn clipped_gouraud_as_whole_near_a_half() {
         }
     }
 }
+
+proptest! {
+    /// A Gouraud triangle, with or without depth, drawn through a window
+    /// that cuts it anywhere (embedded-graphics' `Clipped`) writes inside
+    /// the window exactly the pixels, values and counts it writes drawn
+    /// whole, and nothing outside it.
+    #[test]
+    fn any_window_gives_the_whole_triangle_inside_it(
+        p in prop::array::uniform6(-(8i64 << 12)..(56 << 12)),
+        c in rgb888(),
+        z in prop::array::uniform3(0u16..u16::MAX),
+        win in (-4i32..52, -4i32..52, 0u32..56, 0u32..56),
+        depth in any::<bool>(),
+    ) {
+        let t = Triangle::new(v(p[0], p[1]), v(p[2], p[3]), v(p[4], p[5]));
+        let window = Rectangle::new(Point::new(win.0, win.1), Size::new(win.2, win.3));
+        let render = |clip: &Rectangle| {
+            let mut display = SimDisplay::new(48, 48, Rgb888::BLACK);
+            let mut storage = [0u16; 48 * 48];
+            let buffer = DepthBuffer::new(&mut storage, 48);
+            buffer.clear();
+            let Ok(()) = match depth {
+                true => t.gouraud(c).with_depth(z, buffer).draw(&mut display.clipped(clip)),
+                false => t.gouraud(c).draw(&mut display.clipped(clip)),
+            };
+            display
+        };
+        let whole = render(&Rectangle::new(Point::zero(), Size::new(48, 48)));
+        let part = render(&window);
+        for q in Rectangle::new(Point::zero(), Size::new(48, 48)).points() {
+            if window.contains(q) {
+                prop_assert_eq!(part.pixel(q), whole.pixel(q), "at {:?}", q);
+                prop_assert_eq!(part.write_count(q), whole.write_count(q), "at {:?}", q);
+            } else {
+                prop_assert_eq!(part.write_count(q), Some(0), "at {:?}", q);
+            }
+        }
+    }
+}
