@@ -40,7 +40,10 @@
 //!     display list, drawn whole into the framebuffer, as `.ci/icount`'s
 //!     "whole frame" row;
 //! 21. the same list rendered in bands of 16 rows, as its "bands of 16"
-//!     row: where the bands' extra instructions go.
+//!     row: where the bands' extra instructions go;
+//! 22. and 23. the 16 px and 64 px triangles of windows 2 and 3 through
+//!     `draw` (the framebuffer as a `DrawTarget`: a one-row `fill_solid`
+//!     a span), as embedded-graphics' own shapes draw.
 //!
 //! Built for the host, it does nothing.
 
@@ -89,6 +92,15 @@ mod target {
     fn draw(t: &Triangle, fb: &mut SceneBuffer) {
         begin();
         let Ok(()) = black_box(t).fill(Rgb565::RED).draw_spans(black_box(fb));
+        end();
+    }
+
+    /// One triangle drawn through `Drawable::draw`, the framebuffer as a
+    /// `DrawTarget`, traced.
+    #[inline(never)]
+    fn draw_as_target(t: &Triangle, fb: &mut SceneBuffer) {
+        begin();
+        let Ok(()) = black_box(t).fill(Rgb565::RED).draw(black_box(fb));
         end();
     }
 
@@ -244,6 +256,8 @@ mod target {
         begin();
         let _ = black_box(list).render_bands(240, &mut *buffers, None, &mut nowhere);
         end();
+        draw_as_target(&small, FB);
+        draw_as_target(&irregular(64, 64, 64), FB);
         super::semihosting::exit_success()
     }
 }
