@@ -242,8 +242,8 @@ const STEPPED_COLUMNS: u32 = 8;
 /// `L_k` ([`Frame::lambda_steps_by_division`]), rounded to `2^-44`
 /// ([`Linear::offset`]): off by less than `2 * 65535 * 2^-61 + 2^-45 <
 /// 2^-43` a unit step. From a division on, the first pixels of a
-/// triangle's spans go down at most `2^20` rows and, the left side of a
-/// triangle (or its clip) being convex, at most `2^21` columns across
+/// triangle's (whole, uncut) spans go down at most `2^20` rows and, the
+/// left side of a triangle being convex, at most `2^21` columns across
 /// (its box is at most `2^20` px wide), so the carried value is within
 /// `3 * 2^20 * 2^-43 + 2^-43 < 2^-20` of exact; the value handed out,
 /// its floor at `2^-32`, within `2^-20 + 2^-33` (module docs: the error
@@ -252,7 +252,9 @@ const STEPPED_COLUMNS: u32 = 8;
 /// Sizes: at a lit pixel the carried value is below `2^60 + 2^24` in
 /// magnitude (`|a(p) - a_0| <= 65535`); steps are taken only when the
 /// row step is within `2^60` and the column step within `2^57`, so a
-/// move adds less than `2^61` and every sum stays below `2^62`. That
+/// move of up to [`STEPPED_COLUMNS`] adds less than `2^61` and every sum
+/// stays below `2^62`; a farther move is one product, checked (it ends
+/// at a lit pixel, so it stays in range, but that is not assumed). That
 /// test is made for a group of attributes at once, and a group whose
 /// steps fail it is divided for at every span: a Gouraud triangle's
 /// colours and its depth are two groups (`SPLIT`),
@@ -1081,7 +1083,9 @@ impl Window {
     #[inline(always)]
     pub(crate) fn of(clip: &embedded_graphics_core::primitives::Rectangle) -> Self {
         let left = clip.top_left.x;
-        // Clamped into `i32`: the cast is exact.
+        // Clamped into `i32`: the cast is exact. (Through `clip::Bounds`,
+        // whose `of` is not inlined at opt-level "s", shading took 100
+        // bytes more flash on a Cortex-M4.)
         let right = (i64::from(left) + i64::from(clip.size.width)).min(i64::from(i32::MAX)) as i32;
         Self {
             top: clip.top_left.y,

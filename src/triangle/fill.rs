@@ -9,9 +9,9 @@
 //! frame: exactly the pixels whose nudged centres are inside, the crate's
 //! sampling rule. Each edge steps in O(1) per row; nothing is searched,
 //! and nothing per pixel is done here at all: the sink fills the span.
-//! Except on 32-bit ARM, a small triangle under 24 rows tall is walked in one loop
-//! that takes each span between the lesser and the greater threshold,
-//! with no orientation ([`walk_short`]).
+//! Except on 32-bit ARM, a small triangle under 24 rows tall is walked
+//! in one loop that takes each span between the lesser and the greater
+//! threshold, with no orientation ([`walk_short`]).
 //!
 //! Widths: the whole setup and the stepping run in `i32` when the
 //! vertices lie within `2^29` raw units (131,072 px) of the frame's
@@ -100,8 +100,9 @@ pub(crate) fn triangle_spans<E>(
 /// .ci/codesize`), for 16 px triangles 1,755 → 1,795 instructions, 4 px
 /// 736 → 753, the built-in scene 678,152 → 689,136 and in 16-row bands
 /// 1,104,540 → 1,182,112 (`.ci/icount`). The clamp alone: 9,080 bytes,
-/// 16 px 1,800, the scene 686,540. Dropping [`walk_short`] as well would
-/// save 976 bytes more, but took 4 px triangles to 919.
+/// 16 px 1,800, the scene 686,540. Dropping [`walk_short`] as well (then
+/// for triangles under 4 rows) would have saved 976 bytes more, but took
+/// 4 px triangles to 919.
 const ONE_ROW_LOOP: bool = cfg!(target_arch = "arm") || cfg!(optimize_for_size);
 
 /// The height (raw units) under which a small triangle takes
