@@ -62,9 +62,15 @@ mod target {
     use core::hint::black_box;
 
     use cortex_m_rt::entry;
+    use embedded_graphics::{
+        framebuffer::{buffer_size as eg_buffer_size, Framebuffer as EgFramebuffer},
+        mono_font::{ascii::FONT_6X10, MonoTextStyle, MonoTextStyleBuilder},
+        pixelcolor::raw::{LittleEndian, RawU16},
+        text::{Baseline, Text},
+    };
     use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
     use embedded_graphics_core::primitives::Rectangle;
-    use embedded_graphics_core::{geometry::Point, Drawable};
+    use embedded_graphics_core::{draw_target::DrawTarget, geometry::Point, Drawable};
     use embedded_raster::{
         band::DisplayList,
         framebuffer::{buffer_size, Rgb565Le},
@@ -104,6 +110,39 @@ mod target {
         end();
     }
 
+    /// embedded-graphics 0.8's own framebuffer, the same size and format
+    /// as the scene's, for its text beside this crate's.
+    type EgScreen = EgFramebuffer<
+        Rgb565,
+        RawU16,
+        LittleEndian,
+        320,
+        240,
+        { eg_buffer_size::<Rgb565>(320, 240) },
+    >;
+
+    /// A line of 53 characters of embedded-graphics' 6 x 10 font, white,
+    /// drawn on `target`, traced: without a background (each glyph pixel
+    /// through `draw_iter`) or on a black one (each glyph's cell through
+    /// `fill_contiguous`).
+    #[inline(never)]
+    fn text<D: DrawTarget<Color = Rgb565>>(target: &mut D, background: bool) {
+        let style = match background {
+            true => MonoTextStyleBuilder::new()
+                .font(&FONT_6X10)
+                .text_color(Rgb565::WHITE)
+                .background_color(Rgb565::BLACK)
+                .build(),
+            false => MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE),
+        };
+        let line = "The quick brown fox jumps over the lazy dog 0123456789";
+        let origin = Point::new(0, 100);
+        begin();
+        let _ = Text::with_baseline(black_box(line), origin, style, Baseline::Top)
+            .draw(black_box(target));
+        end();
+    }
+
     /// The built-in scene's display list, as `.ci/icount` builds it.
     type SceneList<'a> = DisplayList<'a, Rgb565, 288, 12>;
 
@@ -117,6 +156,7 @@ mod target {
         static mut SHAPES: Option<super::builtin_scene::SceneShapes> = None;
         static mut BAND16: Band16 = Band16::new();
         static mut DEPTH: [u16; 64 * 64] = [0; 64 * 64];
+        static mut EG: EgScreen = EgScreen::new();
         let small = irregular(32, 48, 16);
         begin();
         let first = |_: Span| Err(());
@@ -258,6 +298,10 @@ mod target {
         end();
         draw_as_target(&small, FB);
         draw_as_target(&irregular(64, 64, 64), FB);
+        for background in [false, true] {
+            text(FB, background);
+            text(EG, background);
+        }
         super::semihosting::exit_success()
     }
 }
