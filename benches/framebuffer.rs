@@ -31,7 +31,8 @@ type Fb = Framebuffer<Rgb565Le, 320, 240, { buffer_size::<Rgb565Le>(320, 240) }>
 type EgFb =
     EgFramebuffer<Rgb565, RawU16, LittleEndian, 320, 240, { eg_buffer_size::<Rgb565>(320, 240) }>;
 
-/// Twenty-four lines of 53 characters: the screen full of text.
+/// Twenty-four lines of 54 characters (the last one cut by the screen's
+/// right edge): the screen full of text.
 const LINE: &str = "The quick brown fox jumps over the lazy dog 0123456789";
 
 /// Draws the screen full of text in `style`.

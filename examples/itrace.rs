@@ -121,10 +121,10 @@ mod target {
         { eg_buffer_size::<Rgb565>(320, 240) },
     >;
 
-    /// A line of 53 characters of embedded-graphics' 6 x 10 font, white,
-    /// drawn on `target`, traced: without a background (each glyph pixel
-    /// through `draw_iter`) or on a black one (each glyph's cell through
-    /// `fill_contiguous`).
+    /// A line of 54 characters of embedded-graphics' 6 x 10 font (the last
+    /// one cut by the screen's right edge), white, drawn on `target`,
+    /// traced: without a background (each glyph pixel through `draw_iter`)
+    /// or on a black one (each glyph's cell through `fill_contiguous`).
     #[inline(never)]
     fn text<D: DrawTarget<Color = Rgb565>>(target: &mut D, background: bool) {
         let style = match background {
