@@ -43,7 +43,11 @@
 //!     row: where the bands' extra instructions go;
 //! 22. and 23. the 16 px and 64 px triangles of windows 2 and 3 through
 //!     `draw` (the framebuffer as a `DrawTarget`: a one-row `fill_solid`
-//!     a span), as embedded-graphics' own shapes draw.
+//!     a span), as embedded-graphics' own shapes draw;
+//! 24. to 27. a line of embedded-graphics' 6 x 10 text (54 characters),
+//!     transparent (`draw_iter`) on this crate's framebuffer, then on
+//!     embedded-graphics 0.8's of the same size and format, then the same
+//!     two on a background (`fill_contiguous`).
 //!
 //! Built for the host, it does nothing.
 
