@@ -187,6 +187,10 @@ mod target {
     #[derive(Clone, Copy)]
     enum Batch<'a> {
         Triangles(&'a [(Triangle, Rgb565)]),
+        /// The same triangles through `draw` (the framebuffer as a
+        /// `DrawTarget`: each span a one-row `fill_solid`), as
+        /// embedded-graphics' own shapes are drawn.
+        Drawn(&'a [(Triangle, Rgb565)]),
         /// Triangles drawn by a chosen [`TriangleAlgorithm`].
         Variants(TriangleAlgorithm, &'a [(Triangle, Rgb565)]),
         Rects(&'a [Rectangle]),
@@ -200,7 +204,10 @@ mod target {
     impl Batch<'_> {
         fn len(self) -> usize {
             match self {
-                Batch::Triangles(ts) | Batch::Variants(_, ts) | Batch::Gouraud(ts) => ts.len(),
+                Batch::Triangles(ts)
+                | Batch::Drawn(ts)
+                | Batch::Variants(_, ts)
+                | Batch::Gouraud(ts) => ts.len(),
                 Batch::Rects(rs) => rs.len(),
                 Batch::Lines(ls) => ls.len(),
                 Batch::ThickLines(ls) => ls.len(),
@@ -210,7 +217,9 @@ mod target {
 
         fn draw<D: DrawTarget<Color = Rgb565>>(self, target: &mut D) -> Result<(), D::Error> {
             match self {
-                Batch::Triangles(ts) => ts.iter().try_for_each(|(t, c)| t.fill(*c).draw(target)),
+                Batch::Triangles(ts) | Batch::Drawn(ts) => {
+                    ts.iter().try_for_each(|(t, c)| t.fill(*c).draw(target))
+                }
                 Batch::Variants(a, ts) => ts
                     .iter()
                     .try_for_each(|(t, c)| t.fill(*c).algorithm(a).draw(target)),
@@ -226,10 +235,12 @@ mod target {
         }
 
         /// The same on the framebuffer through its span sink (the direct
-        /// path); rectangles through `fill_solid`.
+        /// path), but [`Batch::Drawn`] through `draw`; rectangles through
+        /// `fill_solid`.
         fn draw_spans(self, fb: &mut SceneBuffer) {
             let Ok(()) = match self {
                 Batch::Triangles(ts) => ts.iter().try_for_each(|(t, c)| t.fill(*c).draw_spans(fb)),
+                Batch::Drawn(ts) => ts.iter().try_for_each(|(t, c)| t.fill(*c).draw(fb)),
                 Batch::Variants(a, ts) => ts
                     .iter()
                     .try_for_each(|(t, c)| t.fill(*c).algorithm(a).draw_spans(fb)),
@@ -594,6 +605,37 @@ mod target {
             let n = fat_triangles(seed, size, count, &mut ts);
             let (batch, group) = (Batch::Triangles(&ts[..n]), "flat triangles");
             row(&mut counter, FB, RECTS, group, label, batch, false);
+        }
+
+        // The same triangles through `draw`, the embedded-graphics way.
+        let group = "flat triangles through `draw`";
+        for (size, count, label) in [(16, 64, "16 px"), (64, 15, "64 px")] {
+            let n = tiles(size, count, &mut ts);
+            row(
+                &mut counter,
+                FB,
+                RECTS,
+                group,
+                label,
+                Batch::Drawn(&ts[..n]),
+                false,
+            );
+        }
+        for (seed, size, count, label) in [
+            (1, 4.0, 64, "random, 4 px across"),
+            (2, 16.0, 64, "random, 16 px across"),
+            (3, 64.0, 16, "random, 64 px across"),
+        ] {
+            let n = fat_triangles(seed, size, count, &mut ts);
+            row(
+                &mut counter,
+                FB,
+                RECTS,
+                group,
+                label,
+                Batch::Drawn(&ts[..n]),
+                false,
+            );
         }
 
         // Gouraud-shaded triangles (through `draw`: each span one
