@@ -462,6 +462,26 @@ mod target {
         (sin, cos)
     }
 
+    /// A row of `group` for each random pool (4, 16 and 64 px across), its
+    /// triangles drawn as `batch` makes them.
+    fn random_rows(
+        counter: &mut Counter,
+        fb: &mut SceneBuffer,
+        rects: &mut [Rectangle],
+        group: &str,
+        batch: fn(&[(Triangle, Rgb565)]) -> Batch<'_>,
+    ) {
+        let mut ts = [(Triangle::default(), BLUE); 64];
+        for (seed, size, count, label) in [
+            (1, 4.0, 64, "random, 4 px across"),
+            (2, 16.0, 64, "random, 16 px across"),
+            (3, 64.0, 16, "random, 64 px across"),
+        ] {
+            let n = fat_triangles(seed, size, count, &mut ts);
+            row(counter, fb, rects, group, label, batch(&ts[..n]), false);
+        }
+    }
+
     /// `count` (at most 64) random fat triangles `size` px across, as the
     /// host's pools (`benches/common/pools.rs`): corners on a circle of
     /// diameter `size` around a random centre that keeps them on the
@@ -597,15 +617,9 @@ mod target {
             false,
         );
         // Random fat triangles with fractional corners, as the host's pools.
-        for (seed, size, count, label) in [
-            (1, 4.0, 64, "random, 4 px across"),
-            (2, 16.0, 64, "random, 16 px across"),
-            (3, 64.0, 16, "random, 64 px across"),
-        ] {
-            let n = fat_triangles(seed, size, count, &mut ts);
-            let (batch, group) = (Batch::Triangles(&ts[..n]), "flat triangles");
-            row(&mut counter, FB, RECTS, group, label, batch, false);
-        }
+        random_rows(&mut counter, FB, RECTS, "flat triangles", |ts| {
+            Batch::Triangles(ts)
+        });
 
         // The same triangles through `draw`, the embedded-graphics way.
         let group = "flat triangles through `draw`";
@@ -621,22 +635,7 @@ mod target {
                 false,
             );
         }
-        for (seed, size, count, label) in [
-            (1, 4.0, 64, "random, 4 px across"),
-            (2, 16.0, 64, "random, 16 px across"),
-            (3, 64.0, 16, "random, 64 px across"),
-        ] {
-            let n = fat_triangles(seed, size, count, &mut ts);
-            row(
-                &mut counter,
-                FB,
-                RECTS,
-                group,
-                label,
-                Batch::Drawn(&ts[..n]),
-                false,
-            );
-        }
+        random_rows(&mut counter, FB, RECTS, group, |ts| Batch::Drawn(ts));
 
         // Gouraud-shaded triangles (through `draw`: each span one
         // `fill_contiguous` of its colours), against a flat fill of the
