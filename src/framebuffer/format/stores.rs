@@ -701,7 +701,7 @@ mod tests {
         let mut lines = 0;
         for a in grid.clone() {
             for b in grid.clone() {
-                let Some(pixels) = crate::Line::new(a, b).pixels(&screen) else {
+                let Some(pixels) = crate::line::Line::new(a, b).pixels(&screen) else {
                     continue;
                 };
                 for offset in [0, 1] {
