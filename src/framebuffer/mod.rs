@@ -569,7 +569,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
     /// filled where it is made, as through the framebuffer's own
     /// [`SpanSink`]; taller rectangles go to an out-of-line fill.
     // Inlined on hosts into the triangle walks' row loop, as
-    // `fill_span` (see `triangle::fill::by_numbers`).
+    // `fill_span` (see `raster::walk::by_numbers`).
     #[cfg_attr(not(target_arch = "arm"), inline(always))]
     #[cfg_attr(target_arch = "arm", inline)]
     fn fill_solid(&mut self, area: &Rectangle, color: F::Color) -> Result<(), Infallible> {
@@ -579,7 +579,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> DrawTarget
         // callgrind: small 1,223 a triangle → 1,177, medium 4,153 →
         // 3,807, large 14,777 → 13,540 (against clamping the row first
         // and handing it to `fill_span`, as the other rows still are
-        // below). On hosts only: inlined wherever a span reaches
+        // below). On 64-bit targets only: inlined wherever a span reaches
         // `fill_solid`, it took 1.2 KB more of the framebuffer's code in
         // `.ci/codesize`'s whole Cortex-M4 firmware at "s" (3.8 KB on
         // ARMv6-M; 1.5 KB and 6.5 KB at opt-level 3).
@@ -650,7 +650,7 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> SpanSink<F:
     }
 
     // Inlined on hosts into the triangle walks' row loop (see
-    // `triangle::fill::by_numbers`).
+    // `raster::walk::by_numbers`).
     #[cfg_attr(not(target_arch = "arm"), inline(always))]
     #[cfg_attr(target_arch = "arm", inline)]
     fn fill_span(&mut self, span: Span, color: F::Color) -> Result<(), Infallible> {

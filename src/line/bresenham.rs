@@ -15,8 +15,8 @@ use super::{
 use crate::raster::wide::Wide;
 use embedded_graphics_core::geometry::Point;
 
-/// Calls `emit` with the runs of the visible part `v` of `c`, in order of
-/// growing major coordinate.
+/// Calls `emit` with the runs of the pixels `p` has left to iterate, in
+/// order of growing major coordinate.
 pub(crate) fn runs<E>(
     p: &LinePixels,
     emit: &mut impl FnMut(Run) -> Result<(), E>,

@@ -10,10 +10,11 @@
 //! e = (dx, dy) / (2 len),   n = (-dy, dx) w / (2 len),   len = sqrt(dx^2 + dy^2)
 //! ```
 //!
-//! rounded to the nearest 1/4096 px (exactly, in integers: a division and
-//! an integer square root for each of the four, in 64 bits while `dx w`
-//! and `dy w` stay under 2^20, any line on a screen, in 128 bits past
-//! that), and it is filled as a convex polygon under the crate's sampling rule:
+//! rounded to the nearest 1/4096 px (exactly, in integers: one integer
+//! square root and one reciprocal a line, then a few products for each
+//! component, in 64 bits while the squared length stays under 2^62, any
+//! line on a screen, through a division and a square root in 128 bits
+//! past that), and it is filled as a convex polygon under the crate's sampling rule:
 //! two chains of edges from its top corner to its bottom one, one span a
 //! row (the two triangles sharing its diagonal light the same pixels, in
 //! two spans a row). A zero-length thick line is the `w x w` square

@@ -293,7 +293,7 @@ impl<D: DrawTarget> SpanSink<D::Color> for DrawTargetSink<'_, D> {
     }
 
     // Inlined on hosts into the triangle walks' row loop (see
-    // `triangle::fill::by_numbers`).
+    // `raster::walk::by_numbers`).
     #[cfg_attr(not(target_arch = "arm"), inline(always))]
     #[cfg_attr(target_arch = "arm", inline)]
     fn fill_span(&mut self, span: Span, color: D::Color) -> Result<(), D::Error> {

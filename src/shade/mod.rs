@@ -49,7 +49,7 @@
 //!   its rounding, added once a span;
 //! - per pixel, one add `v += d` per attribute, and the output is `floor(v
 //!   / 2^32)`, the integer part (the value rounded). On 32-bit targets
-//!   (Cortex-M, RISC-V) a Gouraud span carries its channels' integer
+//!   not built for size (Cortex-M, RISC-V, i686) a Gouraud span carries its channels' integer
 //!   parts packed into one word, as the colour packs them, and their
 //!   fractions apart: the same adds and the same integer parts, in fewer
 //!   registers (`PackedChannels` in the source).

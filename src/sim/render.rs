@@ -27,7 +27,9 @@ impl Command {
     /// [`FilledTriangle`](crate::FilledTriangle), `gtri` as a
     /// [`GouraudTriangle`](crate::GouraudTriangle), `line` and `polyline` as
     /// 1-pixel Bresenham [`Line`](crate::Line) and
-    /// [`Polyline`] strokes. Nothing is drawn outside the target.
+    /// [`Polyline`] strokes, `poly` as a [`Polygon`] filled under its rule
+    /// (a hand-made command with too few or too many vertices draws
+    /// nothing). Nothing is drawn outside the target.
     ///
     /// # Errors
     ///

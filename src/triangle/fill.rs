@@ -369,7 +369,8 @@ fn relative<T: Wide>(frame: &Frame, v: &[Vertex; 3]) -> Option<[(T, T); 3]> {
 ///
 /// Inlined on hosts: called out of line, the sorted array went back
 /// through memory, and random 4 px and 16 px triangles took 10 % and 6 %
-/// longer. Out of line on ARM: inlined there, setup was 291 and the whole
+/// longer. Left out of line on ARM (the compiler's choice, seen in
+/// `.ci/itrace`'s listing): inlined there, setup was 291 and the whole
 /// 16 px triangle 1,802 (against 303 and 1,806, measured at the same
 /// commit), for 68 more bytes of flash at opt-level "s".
 #[cfg_attr(not(target_arch = "arm"), inline(always))]

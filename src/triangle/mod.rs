@@ -325,7 +325,7 @@ impl<C: PixelColor> SpanDrawable for FilledTriangle<C> {
         let clip = sink.bounds();
         self.triangle.for_each_span(
             &clip,
-            // Into the row loop on hosts (see `fill::by_numbers`).
+            // Into the row loop on hosts (see `raster::walk::by_numbers`).
             #[cfg_attr(not(target_arch = "arm"), inline(always))]
             |span| sink.fill_span(span, self.color),
         )

@@ -2,11 +2,12 @@
 //!
 //! Coordinates are snapped vertices in units of `2^-u` px
 //! (`u = max(bits, 1)`), so pixel `i`'s centre is `i 2^u + 2^(u-1)`, an
-//! integer. The edge functions, their top-left bias and their reduction by
-//! the pixel step `2^u` (`F = floor((E + bias) / 2^u)`, exact because the
-//! centres are `2^u` apart) are those of the default rasterizer
-//! (`raster.rs`) at this unit; `F_k` is then stepped over every pixel of
-//! the scanned rectangle, with no span tracking or early exit.
+//! integer. The edge functions carry the crate's top-left bias (the
+//! sampling rule the default rasterizer's edges apply as thresholds, see
+//! `raster::edge`) and are reduced by the pixel step `2^u` (`F =
+//! floor((E + bias) / 2^u)`, exact because the centres are `2^u` apart);
+//! `F_k` is then stepped over every pixel of the scanned rectangle, with
+//! no span tracking or early exit.
 //!
 //! `|F_k| <= 2^u W H + 1` over a `W x H` px box, and `|A_k| <= 2^u H`,
 //! `|B_k| <= 2^u W`: the exact per-triangle check below picks `i32` when
