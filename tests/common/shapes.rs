@@ -49,3 +49,29 @@ prop_compose! {
         Triangle::new(v(cx + off(0), cy + off(1)), v(cx + off(2), cy + off(3)), v(cx + off(4), cy + off(5)))
     }
 }
+
+prop_compose! {
+    /// Slivers: the first vertex within `corner` raw units of the origin,
+    /// the second within `reach` of it, and the third close to the line
+    /// through the two (up to 3000 raw units off it, one raw unit off it,
+    /// or exactly on it: a third of the cases each).
+    pub fn sliver(corner: i64, reach: i64)(
+        p0 in (-corner..corner, -corner..corner),
+        d in (-reach..reach, -reach..reach),
+        t in -2048i64..=6144,
+        off in (-3000i64..=3000, -3000i64..=3000),
+        kind in 0u8..3,
+    ) -> Triangle {
+        let (d, (ox, oy)) = match kind {
+            0 => (d, off),
+            1 => (d, (off.0.signum(), off.1.signum())),
+            // Whole pixels apart, so that `d t / 4096` is exact: collinear.
+            _ => ((d.0 / 4096 * 4096, d.1 / 4096 * 4096), (0, 0)),
+        };
+        Triangle::new(
+            v(p0.0, p0.1),
+            v(p0.0 + d.0, p0.1 + d.1),
+            v(p0.0 + d.0 * t / 4096 + ox, p0.1 + d.1 * t / 4096 + oy),
+        )
+    }
+}
