@@ -98,7 +98,7 @@
 //! | [`Span`], [`Run`], [`SpanSink`] coordinates and lengths | any `i32` / `u32` | empty spans draw nothing; sums saturate at `i32::MAX` |
 //! | [`Polygon`] vertex count | `3..=N` | [`PolygonError`] |
 //! | [`delaunay::Delaunay`] points | up to `N <= 32767` | `N` checked at compile time; more points: [`delaunay::DelaunayError`] |
-//! | colours ([`shade::ShadeColor`]) | each channel `0..=MAX` (`Rgb565` 31/63/31, `Rgb888`, `Gray8` 255, `BinaryColor` 1) | high bits dropped as `Rgb565::new` does |
+//! | colours ([`shade::ShadeColor`]) | each channel `0..=MAX` (`Rgb565` and `Bgr565` 31/63/31, `Rgb555`, `Bgr555` 31, `Rgb666`, `Bgr666` 63, `Rgb888`, `Bgr888`, `Gray8` 255, `Gray4` 15, `Gray2` 3, `BinaryColor` 1) | high bits dropped as the colours' `new` does |
 //! | depths ([`shade::DepthBuffer`]) | any `u16` (`FAR` never passes); any width and storage | width 0: no rows, nothing passes |
 //! | [`framebuffer`] sizes `W`, `H` | [`framebuffer::buffer_size`] fits `usize` | compile-time error |
 //! | [`band::DisplayList`] commands | up to its capacity `N` | [`band::DisplayListFull`], nothing added or lost |

@@ -11,7 +11,10 @@ use core::convert::Infallible;
 use embedded_graphics::draw_target::DrawTargetExt;
 use embedded_graphics_core::{
     geometry::{Point, Size},
-    pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888},
+    pixelcolor::{
+        Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, Rgb555, Rgb565, Rgb666,
+        Rgb888,
+    },
     prelude::*,
     primitives::Rectangle,
 };
@@ -94,15 +97,28 @@ fn assert_blend<C: ShadeColor + core::fmt::Debug>(
     colors: [C; 3],
     clip: &Rectangle,
 ) -> Result<(), TestCaseError> {
+    assert_blend_read(t, colors, clip, C::CHANNELS, ShadeColor::channels)
+}
+
+/// [`assert_blend`] with the first `channels` channels of each colour read
+/// by `read`: the colour's own accessors, for the colours whose
+/// `ShadeColor` is checked here rather than trusted.
+fn assert_blend_read<C: ShadeColor + core::fmt::Debug>(
+    t: &Triangle,
+    colors: [C; 3],
+    clip: &Rectangle,
+    channels: usize,
+    read: impl Fn(C) -> [u8; 3],
+) -> Result<(), TestCaseError> {
     let spans = shaded(t, colors, clip);
     let flat = flat_spans(t, clip);
     prop_assert_eq!(spans.iter().map(|s| s.0).collect::<Vec<_>>(), flat);
-    let ch = colors.map(ShadeColor::channels);
+    let ch = colors.map(&read);
     for (span, pixels) in &spans {
         prop_assert_eq!(pixels.len(), span.len() as usize);
         for (x, c) in (span.x_start..).zip(pixels) {
-            let got = c.channels();
-            for k in 0..C::CHANNELS {
+            let got = read(*c);
+            for k in 0..channels {
                 let a = ch.map(|c| i128::from(c[k]));
                 let e = exact(t, a, i64::from(x), i64::from(span.y));
                 if let Err(msg) = check_value(i128::from(got[k]), e) {
@@ -169,6 +185,31 @@ proptest! {
     fn gray8_blend_at_every_scale(t in any_scale(), c in gray8(), which in 0usize..4, f in any::<(u16, u16)>()) {
         let (cx, cy) = focus(&t, which, f.0, f.1);
         assert_blend(&t, c, &window(cx, cy, 40, 40))?;
+    }
+
+    /// The other colours of embedded-graphics (those of the framebuffer's
+    /// formats and the rest of its RGB and BGR ones), each channel read
+    /// by the colour's own accessors (`r`, `g`, `b`, `luma`), so that a
+    /// channel put in the wrong place or cut short fails.
+    #[test]
+    fn every_other_colour_blends_at_every_scale(t in any_scale(), raw in any::<[[u8; 3]; 3]>(), which in 0usize..4, f in any::<(u16, u16)>()) {
+        let (cx, cy) = focus(&t, which, f.0, f.1);
+        let clip = window(cx, cy, 24, 24);
+        macro_rules! rgb {
+            ($($color:ident),*) => {$(
+                // `new` keeps each channel's low bits: any byte is a colour.
+                let colors = raw.map(|[r, g, b]| $color::new(r, g, b));
+                assert_blend_read(&t, colors, &clip, 3, |c: $color| [c.r(), c.g(), c.b()])?;
+            )*};
+        }
+        rgb!(Rgb555, Bgr555, Bgr565, Rgb666, Bgr666, Bgr888);
+        macro_rules! gray {
+            ($($color:ident),*) => {$(
+                let colors = raw.map(|[l, _, _]| $color::new(l));
+                assert_blend_read(&t, colors, &clip, 1, |c: $color| [c.luma(), 0, 0])?;
+            )*};
+        }
+        gray!(Gray2, Gray4);
     }
 
     #[test]
@@ -368,6 +409,87 @@ fn binary_color_is_the_majority_and_blends_at_the_midline() {
             assert_eq!(c.is_on(), x >= 5, "pixel ({x}, {})", span.y);
         }
     }
+}
+
+/// Each colour's channel maxima are those of its `WHITE`, read by the
+/// colour's own accessors, and its channel count is 3 for the RGB and BGR
+/// colours, 1 for the greys and `BinaryColor`.
+#[test]
+fn channel_maxima_are_white() {
+    macro_rules! rgb {
+        ($($color:ident),*) => {$(
+            let white = $color::WHITE;
+            assert_eq!($color::MAX, [white.r(), white.g(), white.b()], stringify!($color));
+            assert_eq!($color::CHANNELS, 3, stringify!($color));
+        )*};
+    }
+    rgb!(Rgb555, Bgr555, Rgb565, Bgr565, Rgb666, Bgr666, Rgb888, Bgr888);
+    macro_rules! gray {
+        ($($color:ident),*) => {$(
+            assert_eq!($color::MAX, [$color::WHITE.luma(), 0, 0], stringify!($color));
+            assert_eq!($color::CHANNELS, 1, stringify!($color));
+        )*};
+    }
+    gray!(Gray2, Gray4, Gray8);
+    assert_eq!(BinaryColor::MAX, [1, 0, 0]);
+}
+
+/// Gouraud triangles on the framebuffer formats whose colours are not
+/// `Rgb565`, `Rgb888`, `Gray8` or `BinaryColor`: every pixel of the
+/// framebuffer holds the colour `for_each_span` gives it, the rest the
+/// background.
+#[test]
+fn gouraud_on_every_framebuffer_format() {
+    use embedded_raster::framebuffer::{
+        buffer_size, Bgr565Be, Bgr565Le, Gray2Lsb, Gray2Msb, Gray4Lsb, Gray4Msb, PixelFormat,
+        Rgb666Bytes,
+    };
+    use embedded_raster::Framebuffer;
+    fn check<F: PixelFormat, const N: usize>(colors: [F::Color; 3])
+    where
+        F::Color: ShadeColor + core::fmt::Debug,
+    {
+        let t = Triangle::new(
+            Vertex::from_raw(1 << 11, 3 << 11),
+            Vertex::from_raw(77 << 12, 9 << 12),
+            Vertex::from_raw(20 << 12, (47 << 12) + 1234),
+        )
+        .gouraud(colors);
+        let mut fb = Framebuffer::<F, 80, 48, N>::new();
+        let screen = fb.bounding_box();
+        let mut want = std::collections::HashMap::new();
+        t.for_each_span(&screen, |span, it| {
+            for (x, c) in (span.x_start..).zip(it) {
+                want.insert(Point::new(x, span.y), c);
+            }
+            Ok::<(), Infallible>(())
+        })
+        .unwrap();
+        assert!(want.len() > 1000, "{}", want.len());
+        let background = F::Color::from_channels([0; 3]);
+        t.draw(&mut fb).unwrap();
+        for p in screen.points() {
+            let got = fb.pixel(p).unwrap();
+            assert_eq!(got, want.get(&p).copied().unwrap_or(background), "{p:?}");
+        }
+    }
+    let rgb = [[31, 0, 5], [2, 63, 17], [9, 30, 31]];
+    check::<Bgr565Le, { buffer_size::<Bgr565Le>(80, 48) }>(
+        rgb.map(|[r, g, b]| Bgr565::new(r, g, b)),
+    );
+    check::<Bgr565Be, { buffer_size::<Bgr565Be>(80, 48) }>(
+        rgb.map(|[r, g, b]| Bgr565::new(r, g, b)),
+    );
+    let rgb = [[63, 0, 5], [2, 63, 40], [9, 30, 63]];
+    check::<Rgb666Bytes, { buffer_size::<Rgb666Bytes>(80, 48) }>(
+        rgb.map(|[r, g, b]| Rgb666::new(r, g, b)),
+    );
+    let gray = [15, 0, 9];
+    check::<Gray4Msb, { buffer_size::<Gray4Msb>(80, 48) }>(gray.map(Gray4::new));
+    check::<Gray4Lsb, { buffer_size::<Gray4Lsb>(80, 48) }>(gray.map(Gray4::new));
+    let gray = [3, 0, 2];
+    check::<Gray2Msb, { buffer_size::<Gray2Msb>(80, 48) }>(gray.map(Gray2::new));
+    check::<Gray2Lsb, { buffer_size::<Gray2Lsb>(80, 48) }>(gray.map(Gray2::new));
 }
 
 #[test]

@@ -1,23 +1,32 @@
 //! Colours as integer channels: what shading blends.
 
 use embedded_graphics_core::pixelcolor::{
-    BinaryColor, Gray8, GrayColor, PixelColor, Rgb565, Rgb888, RgbColor,
+    Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor, PixelColor,
+    Rgb555, Rgb565, Rgb666, Rgb888, RgbColor,
 };
 
 /// A colour made of up to three integer channels, each blended in its own
-/// range (`0..=31` / `0..=63` / `0..=31` for `Rgb565`, `0..=255` for `Rgb888`
-/// and `Gray8`, `0..=1` for `BinaryColor`).
+/// range: red, green and blue for embedded-graphics' RGB and BGR colours
+/// (`0..=31` / `0..=63` / `0..=31` for `Rgb565` and `Bgr565`, `0..=31`
+/// each for `Rgb555` and `Bgr555`, `0..=63` for `Rgb666` and `Bgr666`,
+/// `0..=255` for `Rgb888` and `Bgr888`), the luma for the greys (`0..=3`
+/// for `Gray2`, `0..=15` for `Gray4`, `0..=255` for `Gray8`), and `0..=1`
+/// for `BinaryColor`: every colour of the crate's framebuffer formats.
 ///
 /// # Examples
 ///
 /// ```
-/// use embedded_graphics::pixelcolor::Rgb565;
+/// use embedded_graphics::pixelcolor::{Bgr565, Gray4, Rgb565};
 /// use embedded_raster::shade::ShadeColor;
 ///
 /// let c = Rgb565::new(31, 40, 2);
 /// assert_eq!(c.channels(), [31, 40, 2]);
 /// assert_eq!(Rgb565::from_channels([31, 40, 2]), c);
 /// assert_eq!(Rgb565::MAX, [31, 63, 31]);
+/// // The same order, red first, whatever the order of the raw bits.
+/// assert_eq!(Bgr565::new(31, 40, 2).channels(), [31, 40, 2]);
+/// assert_eq!(Gray4::new(9).channels(), [9, 0, 0]);
+/// assert_eq!(Gray4::MAX, [15, 0, 0]);
 /// ```
 pub trait ShadeColor: PixelColor {
     /// How many of the three channels are used (the rest are 0).
@@ -28,49 +37,54 @@ pub trait ShadeColor: PixelColor {
     fn channels(self) -> [u8; 3];
     /// The colour with these channels; each is at most its [`MAX`](Self::MAX).
     /// Above it, the built-in colours keep only the channel's low bits
-    /// (`Rgb565`, as `Rgb565::new` does) or read any non-zero value as on
-    /// (`BinaryColor`); `Rgb888` and `Gray8` take every `u8`.
+    /// (the RGB, BGR and grey colours, as their `new` does) or read any
+    /// non-zero value as on (`BinaryColor`); `Rgb888`, `Bgr888` and `Gray8`
+    /// take every `u8`.
     fn from_channels(channels: [u8; 3]) -> Self;
 }
 
-impl ShadeColor for Rgb565 {
-    const CHANNELS: usize = 3;
-    const MAX: [u8; 3] = [31, 63, 31];
-    #[inline(always)]
-    fn channels(self) -> [u8; 3] {
-        [self.r(), self.g(), self.b()]
-    }
-    #[inline(always)]
-    fn from_channels([r, g, b]: [u8; 3]) -> Self {
-        Self::new(r, g, b)
-    }
+/// [`ShadeColor`] for embedded-graphics' RGB and BGR colours: red, green
+/// and blue, each up to the colour's own maximum.
+macro_rules! rgb_shade_color {
+    ($($color:ident),* $(,)?) => {$(
+        impl ShadeColor for $color {
+            const CHANNELS: usize = 3;
+            const MAX: [u8; 3] = [Self::MAX_R, Self::MAX_G, Self::MAX_B];
+            #[inline(always)]
+            fn channels(self) -> [u8; 3] {
+                [self.r(), self.g(), self.b()]
+            }
+            #[inline(always)]
+            fn from_channels([r, g, b]: [u8; 3]) -> Self {
+                Self::new(r, g, b)
+            }
+        }
+    )*};
 }
 
-impl ShadeColor for Rgb888 {
-    const CHANNELS: usize = 3;
-    const MAX: [u8; 3] = [255; 3];
-    #[inline(always)]
-    fn channels(self) -> [u8; 3] {
-        [self.r(), self.g(), self.b()]
-    }
-    #[inline(always)]
-    fn from_channels([r, g, b]: [u8; 3]) -> Self {
-        Self::new(r, g, b)
-    }
+rgb_shade_color!(Rgb555, Bgr555, Rgb565, Bgr565, Rgb666, Bgr666, Rgb888, Bgr888);
+
+/// [`ShadeColor`] for embedded-graphics' greys: the luma, up to `max`
+/// (`GrayColor` gives no constant maximum; a test checks each against the
+/// colour's `WHITE`).
+macro_rules! gray_shade_color {
+    ($($color:ident = $max:literal),* $(,)?) => {$(
+        impl ShadeColor for $color {
+            const CHANNELS: usize = 1;
+            const MAX: [u8; 3] = [$max, 0, 0];
+            #[inline(always)]
+            fn channels(self) -> [u8; 3] {
+                [self.luma(), 0, 0]
+            }
+            #[inline(always)]
+            fn from_channels([l, _, _]: [u8; 3]) -> Self {
+                Self::new(l)
+            }
+        }
+    )*};
 }
 
-impl ShadeColor for Gray8 {
-    const CHANNELS: usize = 1;
-    const MAX: [u8; 3] = [255, 0, 0];
-    #[inline(always)]
-    fn channels(self) -> [u8; 3] {
-        [self.luma(), 0, 0]
-    }
-    #[inline(always)]
-    fn from_channels([l, _, _]: [u8; 3]) -> Self {
-        Self::new(l)
-    }
-}
+gray_shade_color!(Gray2 = 3, Gray4 = 15, Gray8 = 255);
 
 impl ShadeColor for BinaryColor {
     const CHANNELS: usize = 1;

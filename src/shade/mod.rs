@@ -730,10 +730,11 @@ impl Channels64 {
 /// fields apart, so they hold whatever the signs; and at every lit pixel
 /// each integer part lies in `0..=MAX` (module docs), inside its field,
 /// so the packed value unpacks into exactly the channels of the 64-bit
-/// adds. The built-in colours' raw values are packed the same way
-/// (`Rgb565` 5/6/5 bits, `Rgb888` 8/8/8, one channel for `Gray8` and
-/// `BinaryColor`), and the compiler folds the unpacking and the colour's
-/// own packing into one mask.
+/// adds. The RGB colours' raw values are packed the same way (`Rgb565`
+/// 5/6/5 bits, `Rgb888` 8/8/8, red highest), as are the greys' and
+/// `BinaryColor`'s single channel, and the compiler folds the unpacking
+/// and the colour's own packing into one mask; a BGR colour, blue
+/// highest, takes its channels out of the fields one by one.
 ///
 /// On a Cortex-M4 a pixel took 22 instructions as three `i64`, 5 of them
 /// loads of steps that did not fit the registers, and takes 17: three
