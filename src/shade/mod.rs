@@ -49,10 +49,10 @@
 //!   its rounding, added once a span;
 //! - per pixel, one add `v += d` per attribute, and the output is `floor(v
 //!   / 2^32)`, the integer part (the value rounded). On 32-bit targets
-//!   not built for size (Cortex-M, RISC-V, i686) a Gouraud span carries its channels' integer
-//!   parts packed into one word, as the colour packs them, and their
-//!   fractions apart: the same adds and the same integer parts, in fewer
-//!   registers (`PackedChannels` in the source).
+//!   not built for size (Cortex-M, RISC-V, i686) a Gouraud span carries
+//!   its channels' integer parts packed into one word, as an RGB colour
+//!   packs them, and their fractions apart: the same adds and the same
+//!   integer parts, in fewer registers (`PackedChannels` in the source).
 //!
 //! # The error bound
 //!
@@ -733,8 +733,9 @@ impl Channels64 {
 /// adds. The RGB colours' raw values are packed the same way (`Rgb565`
 /// 5/6/5 bits, `Rgb888` 8/8/8, red highest), as are the greys' and
 /// `BinaryColor`'s single channel, and the compiler folds the unpacking
-/// and the colour's own packing into one mask; a BGR colour, blue
-/// highest, takes its channels out of the fields one by one.
+/// and the colour's own packing into one mask. A BGR colour's raw value
+/// has blue highest, so its packing differs from these fields (the same
+/// colours, by the same unpacking).
 ///
 /// On a Cortex-M4 a pixel took 22 instructions as three `i64`, 5 of them
 /// loads of steps that did not fit the registers, and takes 17: three
