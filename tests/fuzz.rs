@@ -15,7 +15,10 @@
 //! and, at the origin, through its own `SpanSink`), that filled shapes,
 //! thick lines and strokes over 1 px wide (polylines with every join,
 //! the outlines of the triangles and polygons) write no pixel twice, that
-//! a depth-tested triangle on a cleared depth buffer lights exactly the
+//! a Gouraud triangle in a window near it lights the same pixels, once
+//! each, with every channel the exact blend's (`tests/common/blend.rs`),
+//! in a colour of one of six formats and on that format's `Framebuffer`
+//! as on a `SimDisplay`, that a depth-tested triangle on a cleared depth buffer lights exactly the
 //! flat triangle's pixels, once each, that a scene never writes more
 //! pixels than its cost estimate (`Scene::pixel_work`), and that a scene
 //! drawn in bands, or through a window that may cut its shapes on any

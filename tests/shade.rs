@@ -27,46 +27,10 @@ use proptest::prelude::*;
 
 mod common;
 
-use common::shapes::{any_scale, focus, sliver, v, MAX, MIN};
-
-fn raw(t: &Triangle) -> [(i128, i128); 3] {
-    t.vertices.map(|v| {
-        let (x, y) = v.raw();
-        (i128::from(x), i128::from(y))
-    })
-}
-
-/// The exact value of an attribute at the centre of pixel `(i, j)` as
-/// `(n, d)` with `d > 0`: `sum(a_k w_k) / area2`, in `i128`, written out
-/// independently of the library (signed areas of the sub-triangles).
-fn exact(t: &Triangle, a: [i128; 3], i: i64, j: i64) -> (i128, i128) {
-    let p = raw(t);
-    let c = (i128::from(i) * 4096 + 2048, i128::from(j) * 4096 + 2048);
-    let cross = |o: (i128, i128), u: (i128, i128), w: (i128, i128)| {
-        (u.0 - o.0) * (w.1 - o.1) - (u.1 - o.1) * (w.0 - o.0)
-    };
-    let d = cross(p[0], p[1], p[2]);
-    // Weight of vertex k: the area of the triangle (c, v_(k+1), v_(k+2)).
-    let n = a[0] * cross(c, p[1], p[2]) + a[1] * cross(c, p[2], p[0]) + a[2] * cross(c, p[0], p[1]);
-    if d < 0 {
-        (-n, -d)
-    } else {
-        (n, d)
-    }
-}
-
-/// Checks output `o` against the exact `n / d`: within 1, and equal to the
-/// rounding (halves up) unless `n / d` is within 2^-12 of a half integer.
-fn check_value(o: i128, (n, d): (i128, i128)) -> Result<(), String> {
-    if (o * d - n).abs() >= d {
-        return Err(format!("{o} is 1 or more away from {n}/{d}"));
-    }
-    let rounded = (2 * n + d).div_euclid(2 * d);
-    if o != rounded && (2 * n - (o + rounded) * d).abs() * 4096 > 2 * d {
-        return Err(format!("{o} is not {n}/{d} rounded ({rounded})"));
-    }
-    Ok(())
-}
+use common::{
+    blend::{check_rounded, exact_at},
+    shapes::{any_scale, focus, sliver, v, MAX, MIN},
+};
 
 /// Every span and pixel colour of the Gouraud triangle inside `clip`.
 fn shaded<C: ShadeColor>(t: &Triangle, colors: [C; 3], clip: &Rectangle) -> Vec<(Span, Vec<C>)> {
@@ -120,8 +84,8 @@ fn assert_blend_read<C: ShadeColor + core::fmt::Debug>(
             let got = read(*c);
             for k in 0..channels {
                 let a = ch.map(|c| i128::from(c[k]));
-                let e = exact(t, a, i64::from(x), i64::from(span.y));
-                if let Err(msg) = check_value(i128::from(got[k]), e) {
+                let e = exact_at(t, a, i64::from(x), i64::from(span.y));
+                if let Err(msg) = check_rounded(i128::from(got[k]), e) {
                     return Err(TestCaseError::fail(format!(
                         "{t:?} {colors:?} pixel ({x}, {}), channel {k}: {msg}",
                         span.y
@@ -345,8 +309,8 @@ proptest! {
             for x in 0..32u32 {
                 let d = depth.get(x, y).unwrap();
                 if plain.write_count(Point::new(x as i32, y as i32)) == Some(1) {
-                    let e = exact(&t, z.map(i128::from), i64::from(x), i64::from(y));
-                    prop_assert!(check_value(i128::from(d), e).is_ok(), "{} vs {:?}", d, e);
+                    let e = exact_at(&t, z.map(i128::from), i64::from(x), i64::from(y));
+                    prop_assert!(check_rounded(i128::from(d), e).is_ok(), "{} vs {:?}", d, e);
                 } else {
                     prop_assert_eq!(d, u16::MAX);
                 }
@@ -623,8 +587,8 @@ fn depth_and_shading_ranges() {
                 for x in 0..8u32 {
                     let stored = depth.get(x, y).unwrap();
                     if d.write_count(Point::new(x as i32, y as i32)) == Some(1) {
-                        let e = exact(&t, z.map(i128::from), i64::from(x), i64::from(y));
-                        check_value(i128::from(stored), e).unwrap();
+                        let e = exact_at(&t, z.map(i128::from), i64::from(x), i64::from(y));
+                        check_rounded(i128::from(stored), e).unwrap();
                         lit += 1;
                     } else {
                         assert_eq!(stored, FAR, "({x}, {y}) of {t:?}");

@@ -13,17 +13,19 @@ use embedded_graphics_core::{
 use embedded_raster::{
     framebuffer::{
         buffer_size, Bgr565Be, Bgr565Le, BinaryMsb, Gray2Lsb, Gray2Msb, Gray4Lsb, Gray4Msb,
-        Gray8Bytes, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
+        Gray8Bytes, PixelFormat, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
     },
     mesh::{Camera, Rotation, Vec3},
-    shade::DepthBuffer,
+    shade::{DepthBuffer, ShadeColor},
     sim::{parse_scene, render_scene, render_scene_in_bands, render_scene_with, SimDisplay},
     FillRule, Framebuffer, Join, Line, LineAlgorithm, Polygon, Polyline, SpanDrawable, SpanSink,
     SubpixelPrecision, Triangle, TriangleAlgorithm, Vertex,
 };
 
 use super::common::{
-    add_spans_from, assert_same, rasterized, reference_fill, reference_triangle, Grid,
+    add_spans_from, assert_same,
+    blend::{check_rounded, exact_at},
+    rasterized, reference_fill, reference_triangle, Grid,
 };
 use super::line_ref::{ideal_minor, reference, Window};
 use super::rng::Rng;
@@ -274,17 +276,52 @@ pub fn triangle(r: &mut Rng) {
     // Every target at the origin.
     let lit = on_every_target(&Target::Tri(t), Point::zero());
     assert_same(&lit, &reference_triangle(&t, 0, 0, 16, 16), &t);
-    // Gouraud: the same pixels.
-    let mut d = SimDisplay::new(16, 16, Rgb888::BLACK);
-    let Ok(()) = t
-        .gouraud([Rgb888::RED, Rgb888::GREEN, Rgb888::BLUE])
-        .draw(&mut d);
-    assert_eq!(d.out_of_bounds_writes(), 0);
-    for j in 0..16 {
-        for i in 0..16 {
-            let written = d.write_count(Point::new(i, j)) != Some(0);
-            assert_eq!(written, lit.get(i64::from(i), i64::from(j)) != 0, "{t:?}");
-        }
+    // Gouraud, in a window near its focus, in a colour of any format.
+    let origin = window_near(r, fx, fy);
+    let lit_near = reference_triangle(&t, origin.x.into(), origin.y.into(), 16, 16);
+    match r.below(6) {
+        0 => gouraud_in_window::<Rgb888Bytes, { buffer_size::<Rgb888Bytes>(16, 16) }>(
+            &t,
+            three(r, [255; 3]).map(|c| Rgb888::new(c[0], c[1], c[2])),
+            origin,
+            &lit_near,
+            |c| [c.r(), c.g(), c.b()],
+        ),
+        1 => gouraud_in_window::<Rgb565Le, { buffer_size::<Rgb565Le>(16, 16) }>(
+            &t,
+            three(r, [31, 63, 31]).map(|c| Rgb565::new(c[0], c[1], c[2])),
+            origin,
+            &lit_near,
+            |c| [c.r(), c.g(), c.b()],
+        ),
+        2 => gouraud_in_window::<Bgr565Be, { buffer_size::<Bgr565Be>(16, 16) }>(
+            &t,
+            three(r, [31, 63, 31]).map(|c| Bgr565::new(c[0], c[1], c[2])),
+            origin,
+            &lit_near,
+            |c| [c.r(), c.g(), c.b()],
+        ),
+        3 => gouraud_in_window::<Rgb666Bytes, { buffer_size::<Rgb666Bytes>(16, 16) }>(
+            &t,
+            three(r, [63; 3]).map(|c| Rgb666::new(c[0], c[1], c[2])),
+            origin,
+            &lit_near,
+            |c| [c.r(), c.g(), c.b()],
+        ),
+        4 => gouraud_in_window::<Gray4Msb, { buffer_size::<Gray4Msb>(16, 16) }>(
+            &t,
+            three(r, [15, 0, 0]).map(|c| Gray4::new(c[0])),
+            origin,
+            &lit_near,
+            |c| [c.luma(), 0, 0],
+        ),
+        _ => gouraud_in_window::<Gray8Bytes, { buffer_size::<Gray8Bytes>(16, 16) }>(
+            &t,
+            three(r, [255, 0, 0]).map(|c| Gray8::new(c[0])),
+            origin,
+            &lit_near,
+            |c| [c.luma(), 0, 0],
+        ),
     }
     // Depth-tested against a cleared buffer, at depths nearer than `FAR`:
     // every pixel passes, so exactly the same pixels, each written once.
@@ -306,6 +343,69 @@ pub fn triangle(r: &mut Rng) {
     // Its outline, in a window near its focus.
     let (width, join) = stroke_style(r);
     on_every_target(&Target::StrokedTri(t, width, join), window_near(r, fx, fy));
+}
+
+/// Three colours' channels, each up to `max`: 0, the maximum, or any.
+fn three(r: &mut Rng, max: [u8; 3]) -> [[u8; 3]; 3] {
+    let mut channel = |m: u8| pick(r, &[0, m], |r| r.below(u64::from(m) + 1) as u8);
+    [0; 3].map(|_| max.map(&mut channel))
+}
+
+/// Draws `t`'s Gouraud version with `colors` in the 16 x 16 window at
+/// `origin`, on a `SimDisplay` and on a `Framebuffer` of format `F`, and
+/// checks that the display gets exactly the flat triangle's pixels (`lit`,
+/// the reference's), each once, with every channel (read by `read`: the
+/// colour's own accessors) within 1 of the exact blend of
+/// `tests/common/blend.rs` and rounded unless near a half, and that the
+/// framebuffer holds the same.
+fn gouraud_in_window<F: PixelFormat, const N: usize>(
+    t: &Triangle,
+    colors: [F::Color; 3],
+    origin: Point,
+    lit: &Grid,
+    read: impl Fn(F::Color) -> [u8; 3],
+) where
+    F::Color: ShadeColor + core::fmt::Debug,
+{
+    let mut fb = Framebuffer::<F, 16, 16, N>::new();
+    let background = fb.pixel(Point::zero()).unwrap();
+    let mut sim = SimDisplay::new(16, 16, background);
+    let shaded = t.gouraud(colors);
+    let Ok(()) = shaded.draw(&mut View {
+        inner: &mut sim,
+        origin,
+    });
+    let Ok(()) = shaded.draw(&mut View {
+        inner: &mut fb,
+        origin,
+    });
+    assert_eq!(sim.out_of_bounds_writes(), 0);
+    let at_vertices = colors.map(&read);
+    for j in 0..16 {
+        for i in 0..16 {
+            let p = Point::new(i, j);
+            let (x, y) = (
+                i64::from(origin.x) + i64::from(i),
+                i64::from(origin.y) + i64::from(j),
+            );
+            assert_eq!(fb.pixel(p), sim.pixel(p), "{t:?} {colors:?} at ({x}, {y})");
+            let count = sim.write_count(p);
+            assert_eq!(
+                count,
+                Some(u32::from(lit.get(x, y) != 0)),
+                "{t:?} at ({x}, {y})"
+            );
+            if count == Some(1) {
+                let got = read(sim.pixel(p).unwrap());
+                for k in 0..<F::Color as ShadeColor>::CHANNELS {
+                    let e = exact_at(t, at_vertices.map(|c| i128::from(c[k])), x, y);
+                    if let Err(msg) = check_rounded(i128::from(got[k]), e) {
+                        panic!("{t:?} {colors:?} at ({x}, {y}), channel {k}: {msg}");
+                    }
+                }
+            }
+        }
+    }
 }
 
 /// A polygon of 3 to 8 vertices under either rule, against the reference.

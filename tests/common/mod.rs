@@ -8,6 +8,7 @@
 
 #![allow(dead_code)]
 
+pub mod blend;
 pub mod shapes;
 
 use embedded_graphics_core::{
