@@ -18,9 +18,10 @@
 //! a Gouraud triangle in a window near it lights the same pixels, once
 //! each, with every channel the exact blend's (`tests/common/blend.rs`),
 //! in a colour of one of six formats and on that format's `Framebuffer`
-//! as on a `SimDisplay`, that a depth-tested triangle on a cleared depth buffer lights exactly the
-//! flat triangle's pixels, once each, that a scene never writes more
-//! pixels than its cost estimate (`Scene::pixel_work`), and that a scene
+//! as on a `SimDisplay`, that a depth-tested triangle on a cleared depth
+//! buffer lights exactly the flat triangle's pixels, once each, storing
+//! the exact depths, that a scene never writes more pixels than its cost
+//! estimate (`Scene::pixel_work`), and that a scene
 //! drawn in bands, or through a window that may cut its shapes on any
 //! side (embedded-graphics' `Clipped`), gives the whole scene's pixels.
 //!

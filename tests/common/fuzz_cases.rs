@@ -16,7 +16,7 @@ use embedded_raster::{
         Gray8Bytes, PixelFormat, Rgb565Be, Rgb565Le, Rgb666Bytes, Rgb888Bytes,
     },
     mesh::{Camera, Rotation, Vec3},
-    shade::{DepthBuffer, ShadeColor},
+    shade::{DepthBuffer, ShadeColor, FAR},
     sim::{parse_scene, render_scene, render_scene_in_bands, render_scene_with, SimDisplay},
     FillRule, Framebuffer, Join, Line, LineAlgorithm, Polygon, Polyline, SpanDrawable, SpanSink,
     SubpixelPrecision, Triangle, TriangleAlgorithm, Vertex,
@@ -324,7 +324,9 @@ pub fn triangle(r: &mut Rng) {
         ),
     }
     // Depth-tested against a cleared buffer, at depths nearer than `FAR`:
-    // every pixel passes, so exactly the same pixels, each written once.
+    // every pixel passes, so exactly the same pixels, each written once,
+    // each storing the exact depth (within 1, rounded unless near a half),
+    // and the rest still `FAR`.
     let mut z = [0u16; 16 * 16];
     let depth = DepthBuffer::new(&mut z, 16);
     depth.clear();
@@ -338,6 +340,15 @@ pub fn triangle(r: &mut Rng) {
             let count = d.write_count(Point::new(i, j));
             let want = u32::from(lit.get(i64::from(i), i64::from(j)) != 0);
             assert_eq!(count, Some(want), "{t:?} at depths {zs:?}");
+            let stored = depth.get(i as u32, j as u32).unwrap();
+            if want == 1 {
+                let e = exact_at(&t, zs.map(i128::from), i64::from(i), i64::from(j));
+                if let Err(msg) = check_rounded(i128::from(stored), e) {
+                    panic!("{t:?} at depths {zs:?}, ({i}, {j}): {msg}");
+                }
+            } else {
+                assert_eq!(stored, FAR, "{t:?} at depths {zs:?}, ({i}, {j})");
+            }
         }
     }
     // Its outline, in a window near its focus.
