@@ -279,49 +279,37 @@ pub fn triangle(r: &mut Rng) {
     // Gouraud, in a window near its focus, in a colour of any format.
     let origin = window_near(r, fx, fy);
     let lit_near = reference_triangle(&t, origin.x.into(), origin.y.into(), 16, 16);
+    // Colours made and read by the colour's own constructor, constants and
+    // accessors, not by `ShadeColor`.
+    macro_rules! rgb {
+        ($f:ty, $c:ident) => {
+            gouraud_in_window::<$f, { buffer_size::<$f>(16, 16) }>(
+                &t,
+                three(r, [$c::MAX_R, $c::MAX_G, $c::MAX_B]).map(|c| $c::new(c[0], c[1], c[2])),
+                origin,
+                &lit_near,
+                |c| [c.r(), c.g(), c.b()],
+            )
+        };
+    }
+    macro_rules! gray {
+        ($f:ty, $c:ident) => {
+            gouraud_in_window::<$f, { buffer_size::<$f>(16, 16) }>(
+                &t,
+                three(r, [$c::WHITE.luma(), 0, 0]).map(|c| $c::new(c[0])),
+                origin,
+                &lit_near,
+                |c| [c.luma(), 0, 0],
+            )
+        };
+    }
     match r.below(6) {
-        0 => gouraud_in_window::<Rgb888Bytes, { buffer_size::<Rgb888Bytes>(16, 16) }>(
-            &t,
-            three(r, [255; 3]).map(|c| Rgb888::new(c[0], c[1], c[2])),
-            origin,
-            &lit_near,
-            |c| [c.r(), c.g(), c.b()],
-        ),
-        1 => gouraud_in_window::<Rgb565Le, { buffer_size::<Rgb565Le>(16, 16) }>(
-            &t,
-            three(r, [31, 63, 31]).map(|c| Rgb565::new(c[0], c[1], c[2])),
-            origin,
-            &lit_near,
-            |c| [c.r(), c.g(), c.b()],
-        ),
-        2 => gouraud_in_window::<Bgr565Be, { buffer_size::<Bgr565Be>(16, 16) }>(
-            &t,
-            three(r, [31, 63, 31]).map(|c| Bgr565::new(c[0], c[1], c[2])),
-            origin,
-            &lit_near,
-            |c| [c.r(), c.g(), c.b()],
-        ),
-        3 => gouraud_in_window::<Rgb666Bytes, { buffer_size::<Rgb666Bytes>(16, 16) }>(
-            &t,
-            three(r, [63; 3]).map(|c| Rgb666::new(c[0], c[1], c[2])),
-            origin,
-            &lit_near,
-            |c| [c.r(), c.g(), c.b()],
-        ),
-        4 => gouraud_in_window::<Gray4Msb, { buffer_size::<Gray4Msb>(16, 16) }>(
-            &t,
-            three(r, [15, 0, 0]).map(|c| Gray4::new(c[0])),
-            origin,
-            &lit_near,
-            |c| [c.luma(), 0, 0],
-        ),
-        _ => gouraud_in_window::<Gray8Bytes, { buffer_size::<Gray8Bytes>(16, 16) }>(
-            &t,
-            three(r, [255, 0, 0]).map(|c| Gray8::new(c[0])),
-            origin,
-            &lit_near,
-            |c| [c.luma(), 0, 0],
-        ),
+        0 => rgb!(Rgb888Bytes, Rgb888),
+        1 => rgb!(Rgb565Le, Rgb565),
+        2 => rgb!(Bgr565Be, Bgr565),
+        3 => rgb!(Rgb666Bytes, Rgb666),
+        4 => gray!(Gray4Msb, Gray4),
+        _ => gray!(Gray8Bytes, Gray8),
     }
     // Depth-tested against a cleared buffer, at depths nearer than `FAR`:
     // every pixel passes, so exactly the same pixels, each written once,
