@@ -387,7 +387,16 @@ fn channel_maxima_are_white() {
             assert_eq!($color::CHANNELS, 3, stringify!($color));
         )*};
     }
-    rgb!(Rgb555, Bgr555, Rgb565, Bgr565, Rgb666, Bgr666, Rgb888, Bgr888);
+    rgb!(Rgb555, Rgb565, Rgb666, Rgb888);
+    // Blue first, as in the raw bits.
+    macro_rules! bgr {
+        ($($color:ident),*) => {$(
+            let white = $color::WHITE;
+            assert_eq!($color::MAX, [white.b(), white.g(), white.r()], stringify!($color));
+            assert_eq!($color::CHANNELS, 3, stringify!($color));
+        )*};
+    }
+    bgr!(Bgr555, Bgr565, Bgr666, Bgr888);
     macro_rules! gray {
         ($($color:ident),*) => {$(
             assert_eq!($color::MAX, [$color::WHITE.luma(), 0, 0], stringify!($color));
@@ -396,6 +405,38 @@ fn channel_maxima_are_white() {
     }
     gray!(Gray2, Gray4, Gray8);
     assert_eq!(BinaryColor::MAX, [1, 0, 0]);
+}
+
+/// The channels are the colour's raw bits, highest field first, each
+/// field as wide as its maximum: put back together, they give
+/// embedded-graphics' own storage value (`IntoStorage`). A BGR colour's
+/// channels in red-first order fail it.
+#[test]
+fn channels_follow_the_raw_bits() {
+    macro_rules! check {
+        ($($color:ident),*) => {$(
+            let width = $color::MAX.map(|m| u8::BITS - m.leading_zeros());
+            for [r, g, b] in [[1u8, 2, 3], [31, 0, 17], [5, 63, 1], [200, 100, 50], [255; 3]] {
+                // `new` keeps each channel's low bits.
+                let c = $color::new(r, g, b);
+                let ch = c.channels().map(u32::from);
+                let packed = (ch[0] << (width[1] + width[2])) | (ch[1] << width[2]) | ch[2];
+                let raw = u32::from(c.into_storage());
+                assert_eq!(packed, raw, "{} {c:?}", stringify!($color));
+                assert_eq!($color::from_channels(c.channels()), c, "{}", stringify!($color));
+            }
+        )*};
+    }
+    check!(Rgb555, Bgr555, Rgb565, Bgr565, Rgb666, Bgr666, Rgb888, Bgr888);
+    macro_rules! gray {
+        ($($color:ident),*) => {$(
+            for l in [0u8, 1, 2, 3, 9, 15, 128, 255] {
+                let c = $color::new(l);
+                assert_eq!(u32::from(c.channels()[0]), u32::from(c.into_storage()), "{c:?}");
+            }
+        )*};
+    }
+    gray!(Gray2, Gray4, Gray8);
 }
 
 /// Gouraud triangles on the framebuffer formats whose colours are not

@@ -6,12 +6,16 @@ use embedded_graphics_core::pixelcolor::{
 };
 
 /// A colour made of up to three integer channels, each blended in its own
-/// range: red, green and blue for embedded-graphics' RGB and BGR colours
-/// (`0..=31` / `0..=63` / `0..=31` for `Rgb565` and `Bgr565`, `0..=31`
-/// each for `Rgb555` and `Bgr555`, `0..=63` for `Rgb666` and `Bgr666`,
-/// `0..=255` for `Rgb888` and `Bgr888`), the luma for the greys (`0..=3`
-/// for `Gray2`, `0..=15` for `Gray4`, `0..=255` for `Gray8`), and `0..=1`
-/// for `BinaryColor`: every colour of the crate's framebuffer formats.
+/// range, in the order of the colour's raw bits, highest first: red,
+/// green and blue for embedded-graphics' RGB colours, blue, green and red
+/// for its BGR ones (`0..=31` / `0..=63` / `0..=31` for `Rgb565` and
+/// `Bgr565`, `0..=31` each for `Rgb555` and `Bgr555`, `0..=63` for `Rgb666`
+/// and `Bgr666`, `0..=255` for `Rgb888` and `Bgr888`), the luma for the
+/// greys (`0..=3` for `Gray2`, `0..=15` for `Gray4`, `0..=255` for
+/// `Gray8`), and `0..=1` for `BinaryColor`: every colour of the crate's
+/// framebuffer formats. Blending treats the channels alike, so their
+/// order changes no pixel; in the raw order, the channels of a shaded
+/// pixel become its raw value by shifts alone.
 ///
 /// # Examples
 ///
@@ -23,8 +27,8 @@ use embedded_graphics_core::pixelcolor::{
 /// assert_eq!(c.channels(), [31, 40, 2]);
 /// assert_eq!(Rgb565::from_channels([31, 40, 2]), c);
 /// assert_eq!(Rgb565::MAX, [31, 63, 31]);
-/// // The same order, red first, whatever the order of the raw bits.
-/// assert_eq!(Bgr565::new(31, 40, 2).channels(), [31, 40, 2]);
+/// // Blue first, as in its raw bits.
+/// assert_eq!(Bgr565::new(31, 40, 2).channels(), [2, 40, 31]);
 /// assert_eq!(Gray4::new(9).channels(), [9, 0, 0]);
 /// assert_eq!(Gray4::MAX, [15, 0, 0]);
 /// ```
@@ -44,25 +48,37 @@ pub trait ShadeColor: PixelColor {
 }
 
 /// [`ShadeColor`] for embedded-graphics' RGB and BGR colours: red, green
-/// and blue, each up to the colour's own maximum.
+/// and blue, each up to the colour's own maximum, at the places `r`, `g`
+/// and `b` of the channels (the order of the raw bits, highest first).
 macro_rules! rgb_shade_color {
-    ($($color:ident),* $(,)?) => {$(
+    ($r:literal, $g:literal, $b:literal: $($color:ident),* $(,)?) => {$(
         impl ShadeColor for $color {
             const CHANNELS: usize = 3;
-            const MAX: [u8; 3] = [Self::MAX_R, Self::MAX_G, Self::MAX_B];
+            const MAX: [u8; 3] = {
+                let mut max = [0; 3];
+                max[$r] = Self::MAX_R;
+                max[$g] = Self::MAX_G;
+                max[$b] = Self::MAX_B;
+                max
+            };
             #[inline(always)]
             fn channels(self) -> [u8; 3] {
-                [self.r(), self.g(), self.b()]
+                let mut c = [0; 3];
+                c[$r] = self.r();
+                c[$g] = self.g();
+                c[$b] = self.b();
+                c
             }
             #[inline(always)]
-            fn from_channels([r, g, b]: [u8; 3]) -> Self {
-                Self::new(r, g, b)
+            fn from_channels(c: [u8; 3]) -> Self {
+                Self::new(c[$r], c[$g], c[$b])
             }
         }
     )*};
 }
 
-rgb_shade_color!(Rgb555, Bgr555, Rgb565, Bgr565, Rgb666, Bgr666, Rgb888, Bgr888);
+rgb_shade_color!(0, 1, 2: Rgb555, Rgb565, Rgb666, Rgb888);
+rgb_shade_color!(2, 1, 0: Bgr555, Bgr565, Bgr666, Bgr888);
 
 /// [`ShadeColor`] for embedded-graphics' greys: the luma, up to `max`
 /// (`GrayColor` gives no constant maximum; a test checks each against the
