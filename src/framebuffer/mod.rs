@@ -400,10 +400,14 @@ impl<F: PixelFormat, const W: usize, const H: usize, const N: usize> Framebuffer
         if area.size.height != 1 {
             return None;
         }
-        let y = usize::try_from(area.top_left.y).ok().filter(|&y| y < H)?;
-        let x = usize::try_from(area.top_left.x).ok()?;
-        let end = x.checked_add(usize::try_from(area.size.width).ok()?)?;
-        if end > W {
+        // A negative coordinate, read as `u32`, is 2^31 or more: past `W`
+        // and `H` (at most `i32::MAX`, see `new`), so each is tested once,
+        // as in `fill_span`; an end past `usize` saturates, past `W` too.
+        let index = |v: u32| usize::try_from(v).unwrap_or(usize::MAX);
+        let y = index(area.top_left.y as u32);
+        let x = index(area.top_left.x as u32);
+        let end = x.saturating_add(index(area.size.width));
+        if y >= H || end > W {
             return None;
         }
         // y < H: the row lies within the buffer's H rows of STRIDE bytes.
