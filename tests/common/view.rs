@@ -55,4 +55,15 @@ impl<D: DrawTarget> DrawTarget for View<'_, D> {
         let area = Rectangle::new(self.shift(area.top_left), area.size);
         self.inner.fill_solid(&area, color)
     }
+
+    /// Passed on whole, so that the inner target's own `fill_contiguous`
+    /// (a `Framebuffer`'s, say) is the one tested.
+    fn fill_contiguous<I: IntoIterator<Item = D::Color>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), D::Error> {
+        let area = Rectangle::new(self.shift(area.top_left), area.size);
+        self.inner.fill_contiguous(&area, colors)
+    }
 }
