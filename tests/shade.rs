@@ -380,23 +380,16 @@ fn binary_color_is_the_majority_and_blends_at_the_midline() {
 /// colours, 1 for the greys and `BinaryColor`.
 #[test]
 fn channel_maxima_are_white() {
+    // The channels in the order of the raw bits: blue first for BGR.
     macro_rules! rgb {
-        ($($color:ident),*) => {$(
+        ([$first:ident, $second:ident, $third:ident] $($color:ident),*) => {$(
             let white = $color::WHITE;
-            assert_eq!($color::MAX, [white.r(), white.g(), white.b()], stringify!($color));
+            assert_eq!($color::MAX, [white.$first(), white.$second(), white.$third()], stringify!($color));
             assert_eq!($color::CHANNELS, 3, stringify!($color));
         )*};
     }
-    rgb!(Rgb555, Rgb565, Rgb666, Rgb888);
-    // Blue first, as in the raw bits.
-    macro_rules! bgr {
-        ($($color:ident),*) => {$(
-            let white = $color::WHITE;
-            assert_eq!($color::MAX, [white.b(), white.g(), white.r()], stringify!($color));
-            assert_eq!($color::CHANNELS, 3, stringify!($color));
-        )*};
-    }
-    bgr!(Bgr555, Bgr565, Bgr666, Bgr888);
+    rgb!([r, g, b] Rgb555, Rgb565, Rgb666, Rgb888);
+    rgb!([b, g, r] Bgr555, Bgr565, Bgr666, Bgr888);
     macro_rules! gray {
         ($($color:ident),*) => {$(
             assert_eq!($color::MAX, [$color::WHITE.luma(), 0, 0], stringify!($color));
