@@ -50,9 +50,10 @@
 //! - per pixel, one add `v += d` per attribute, and the output is `floor(v
 //!   / 2^32)`, the integer part (the value rounded). On 32-bit targets
 //!   not built for size (Cortex-M, RISC-V, i686) a Gouraud span carries
-//!   its channels' integer parts packed into one word, as an RGB colour
-//!   packs them, and their fractions apart: the same adds and the same
-//!   integer parts, in fewer registers (`PackedChannels` in the source).
+//!   its channels' integer parts packed into one word, as the colour
+//!   packs them (`ShadeColor` gives them in its raw bits' order), and
+//!   their fractions apart: the same adds and the same integer parts, in
+//!   fewer registers (`PackedChannels` in the source).
 //!
 //! # The error bound
 //!
