@@ -296,11 +296,9 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, FilledTriangle<C>> {
     where
         D: DrawTarget<Color = C>,
     {
-        // Borrowed where it was made: moved out of its `Option`, the frame
-        // was copied by `memcpy` on a Cortex-M4.
-        let frame = Frame::new(&self.shaded.triangle);
-        let (Some(clip), Some(frame)) = (self.depth.clip(&target.bounding_box()), frame.as_ref())
-        else {
+        let mut slot = None;
+        let frame = Frame::new_in(&mut slot, &self.shaded.triangle);
+        let (Some(clip), Some(frame)) = (self.depth.clip(&target.bounding_box()), frame) else {
             return Ok(());
         };
         let z = depth_setup(frame, self.z);
@@ -335,14 +333,12 @@ impl<C: ShadeColor> Drawable for DepthTriangle<'_, GouraudTriangle<C>> {
     where
         D: DrawTarget<Color = C>,
     {
-        // Each borrowed where it was made: moved out of their `Option`s,
-        // the frame and the setup were copied by `memcpy` on a Cortex-M4.
-        let setup = GouraudSetup::new(&self.shaded);
-        let (Some(clip), Some(setup)) = (self.depth.clip(&target.bounding_box()), setup.as_ref())
-        else {
+        let mut slot = None;
+        let frame = Frame::new_in(&mut slot, &self.shaded.triangle);
+        let (Some(clip), Some(frame)) = (self.depth.clip(&target.bounding_box()), frame) else {
             return Ok(());
         };
-        let frame = &setup.frame;
+        let setup = GouraudSetup::new(frame, &self.shaded.colors);
         let z = depth_setup(frame, self.z);
         let both = setup.linear.and_depth(&z);
         // The colours and the depth apart: the colours are those of the

@@ -126,9 +126,20 @@ pub(crate) struct Frame {
 }
 
 impl Frame {
-    /// `None` for a triangle of zero area (which lights nothing).
-    #[inline(always)]
-    pub(crate) fn new(t: &Triangle) -> Option<Self> {
+    /// The frame of `t`, made in `slot` and borrowed from there; `None`
+    /// (and `slot` left `None`) for a triangle of zero area, which lights
+    /// nothing.
+    ///
+    /// Made in place, as `Option::insert` does. Returned by value, the
+    /// frame (152 bytes on a Cortex-M4) was copied by `memcpy` after its
+    /// steps were found through a reference to it: 164 instructions of a
+    /// 16 px depth-tested triangle's 7,132 (`.ci/itrace`), and in a
+    /// firmware built with LTO, or with two colour types, three copies in
+    /// a Gouraud triangle's setup (about 600 instructions). Out of line:
+    /// inlined into each kind of shading, it took 644 bytes more flash at
+    /// opt-level "s" (`.ci/codesize_shading`).
+    #[inline(never)]
+    pub(crate) fn new_in<'a>(slot: &'a mut Option<Self>, t: &Triangle) -> Option<&'a Self> {
         let p = t.vertices.map(|v| {
             let (x, y) = v.raw();
             (i64::from(x), i64::from(y))
@@ -136,12 +147,12 @@ impl Frame {
         // Raw coordinates are far below 2^62: exact (raster::wide).
         let area2 = orientation(p[0], p[1], p[2]);
         let divisor = Divisor::new(NonZeroU128::new(2 * area2.unsigned_abs())?);
-        let mut frame = Self {
+        let frame = slot.insert(Self {
             p,
             area2,
             divisor,
             lambda_steps: None,
-        };
+        });
         // A triangle that crosses one row of pixel centres at most has one
         // span, and nothing to step: its attributes' per-pixel steps take
         // a division each instead of the four here. It crosses the row of
@@ -854,10 +865,16 @@ const fn layout(max: [u8; 3]) -> ([u32; 3], [i32; 3]) {
     )
 }
 
-/// Per-triangle Gouraud state: the frame and the three channels.
+/// Per-triangle Gouraud state over a triangle's [`Frame`]: the three
+/// channels.
+///
+/// The frame is not part of it: each caller keeps the frame where
+/// [`Frame::new_in`] made it, borrowed. With the frame inside, a setup
+/// built out of line (as in a firmware with LTO and one codegen unit, or
+/// with two colour types) copied the frame three times by `memcpy` on a
+/// Cortex-M4.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct GouraudSetup<C> {
-    frame: Frame,
     linear: Linear<3>,
     /// The linear step a pixel right, as [`Ramp`] carries it.
     step: Carried,
@@ -865,16 +882,18 @@ pub(crate) struct GouraudSetup<C> {
 }
 
 impl<C: ShadeColor> GouraudSetup<C> {
-    fn new(t: &GouraudTriangle<C>) -> Option<Self> {
-        let frame = Frame::new(&t.triangle)?;
-        let values = t.colors.map(|c| c.channels().map(i64::from));
-        let linear = Linear::new(&frame, values);
-        Some(Self {
-            frame,
-            linear,
-            step: Carried::step::<C>(linear.step),
+    fn new(frame: &Frame, colors: &[C; 3]) -> Self {
+        let values = colors.map(|c| c.channels().map(i64::from));
+        // The channels made where they stay, and the step read from there:
+        // made apart and moved in, they were copied by `memcpy` (128
+        // bytes) in a firmware with two colour types on a Cortex-M4.
+        let mut setup = Self {
+            linear: Linear::new(frame, values),
+            step: Carried::step::<C>([0; 3]),
             color: PhantomData,
-        })
+        };
+        setup.step = Carried::step::<C>(setup.linear.step);
+        setup
     }
 
     /// The colours of `len` pixels starting `offset` pixels into a span
@@ -994,12 +1013,12 @@ impl<C: ShadeColor> GouraudTriangle<C> {
         clip: &embedded_graphics_core::primitives::Rectangle,
         mut f: impl FnMut(Span, &mut dyn Iterator<Item = C>) -> Result<(), E>,
     ) -> Result<(), E> {
-        // Borrowed where it was returned (see `draw`).
-        let setup = GouraudSetup::new(self);
-        let Some(setup) = setup.as_ref() else {
+        let mut slot = None;
+        let Some(frame) = Frame::new_in(&mut slot, &self.triangle) else {
             return Ok(());
         };
-        let mut starts = SpanStarts::<3, 3>::new(&setup.frame, &setup.linear);
+        let setup = GouraudSetup::new(frame, &self.colors);
+        let mut starts = SpanStarts::<3, 3>::new(frame, &setup.linear);
         // Every row's values start at its whole span (`shaded_spans`).
         let window = Window::of(clip);
         shaded_spans(&self.triangle, clip, &mut |whole| {
@@ -1140,14 +1159,13 @@ impl<C: ShadeColor> Drawable for GouraudTriangle<C> {
     where
         D: DrawTarget<Color = C>,
     {
-        // Borrowed where it was returned: moved out of its `Option`, the
-        // setup was copied by `memcpy` on a Cortex-M4.
-        let setup = GouraudSetup::new(self);
-        let Some(setup) = setup.as_ref() else {
+        let mut slot = None;
+        let Some(frame) = Frame::new_in(&mut slot, &self.triangle) else {
             return Ok(());
         };
+        let setup = GouraudSetup::new(frame, &self.colors);
         let clip = target.bounding_box();
-        let mut starts = SpanStarts::<3, 3>::new(&setup.frame, &setup.linear);
+        let mut starts = SpanStarts::<3, 3>::new(frame, &setup.linear);
         // Every row's values start at its whole span (`shaded_spans`).
         let window = Window::of(&clip);
         shaded_spans(&self.triangle, &clip, &mut |whole| {
@@ -1267,8 +1285,8 @@ mod tests {
         for case in 0..cases {
             let scale = (next() % scales) as u32;
             let t = random_triangle(&mut next, scale, case % 4 == 0);
-            if let Some(frame) = Frame::new(&t) {
-                check(&t, frame, &mut next);
+            if let Some(frame) = Frame::new_in(&mut None, &t) {
+                check(&t, *frame, &mut next);
             }
         }
     }
