@@ -131,11 +131,12 @@ impl Frame {
     /// nothing.
     ///
     /// Made in place, as `Option::insert` does. Returned by value, the
-    /// frame (152 bytes on a Cortex-M4) was copied by `memcpy` after its
+    /// frame (144 bytes on a Cortex-M4) was copied by `memcpy` after its
     /// steps were found through a reference to it: 164 instructions of a
-    /// 16 px depth-tested triangle's 7,132 (`.ci/itrace`), and in a
-    /// firmware built with LTO, or with two colour types, three copies in
-    /// a Gouraud triangle's setup (about 600 instructions). Out of line:
+    /// 16 px depth-tested triangle's 7,132 (`.ci/itrace`); in a firmware
+    /// built with LTO and one codegen unit, four copies in a Gouraud
+    /// triangle's setup (592 instructions), and with two colour types 727
+    /// instructions of copies. Out of line:
     /// inlined into each kind of shading, it took 644 bytes more flash at
     /// opt-level "s" (`.ci/codesize_shading`).
     #[inline(never)]
@@ -871,8 +872,8 @@ const fn layout(max: [u8; 3]) -> ([u32; 3], [i32; 3]) {
 /// The frame is not part of it: each caller keeps the frame where
 /// [`Frame::new_in`] made it, borrowed. With the frame inside, a setup
 /// built out of line (as in a firmware with LTO and one codegen unit, or
-/// with two colour types) copied the frame three times by `memcpy` on a
-/// Cortex-M4.
+/// with two colour types) copied the frame up to four times by `memcpy`
+/// on a Cortex-M4.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct GouraudSetup<C> {
     linear: Linear<3>,
