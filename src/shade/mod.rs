@@ -1322,6 +1322,25 @@ mod tests {
         Triangle::new(a, b, c)
     }
 
+    /// [`Frame::new_in`] fills its slot only for a triangle with area: a
+    /// triangle of zero area leaves it empty; another is in it, with its
+    /// raw corners and its doubled signed area worked out here by hand.
+    #[test]
+    fn frames_are_made_in_their_slot() {
+        let v = Vertex::from_raw;
+        let mut slot = None;
+        let line = Triangle::new(v(0, 0), v(8192, 4096), v(16384, 8192));
+        assert!(Frame::new_in(&mut slot, &line).is_none());
+        assert!(slot.is_none());
+        // (b - a) x (c - a) = 12288 * 20480 - 4096 * (-8192).
+        let t = Triangle::new(v(4096, 8192), v(16384, 12288), v(4096 - 8192, 8192 + 20480));
+        let made = Frame::new_in(&mut slot, &t).map(|f| (f.p, f.area2));
+        let corners = [(4096, 8192), (16384, 12288), (-4096, 28672)];
+        let area2 = 12288 * 20480 + 4096 * 8192;
+        assert_eq!(made, Some((corners, area2)));
+        assert_eq!(slot.map(|f| (f.p, f.area2)), Some((corners, area2)));
+    }
+
     /// [`Frame::lambdas_at`] and [`Frame::lambda_steps_by_division`]
     /// against their definitions ([`reference`], and the difference of
     /// the weights a pixel apart divided by the host's own division), and
