@@ -136,9 +136,9 @@ impl Frame {
     /// 16 px depth-tested triangle's 7,132 (`.ci/itrace`); in a firmware
     /// built with LTO and one codegen unit, four copies in a Gouraud
     /// triangle's setup (592 instructions), and with two colour types 727
-    /// instructions of copies. Out of line:
-    /// inlined into each kind of shading, it took 644 bytes more flash at
-    /// opt-level "s" (`.ci/codesize_shading`).
+    /// instructions of copies. Out of line: inlined into each kind of
+    /// shading, it took 644 bytes more flash at opt-level "s"
+    /// (`.ci/codesize_shading`).
     #[inline(never)]
     pub(crate) fn new_in<'a>(slot: &'a mut Option<Self>, t: &Triangle) -> Option<&'a Self> {
         let p = t.vertices.map(|v| {
