@@ -701,6 +701,12 @@ type Carried = PackedChannels;
 #[derive(Debug, Clone, Copy)]
 struct Channels64([i64; 3]);
 
+#[allow(dead_code)]
+impl Channels64 {
+    /// No step: what a setup holds until its step is read (`GouraudSetup`).
+    const ZERO: Self = Self([0; 3]);
+}
+
 // The signatures of `PackedChannels`'s, which needs the colour's layout; one
 // of the two is unused on each target (`Carried`).
 #[allow(clippy::extra_unused_type_parameters, dead_code)]
@@ -781,6 +787,12 @@ struct PackedChannels {
 // (`Carried`).
 #[allow(dead_code)]
 impl PackedChannels {
+    /// No step: what a setup holds until its step is read (`GouraudSetup`).
+    const ZERO: Self = Self {
+        whole: 0,
+        fraction: [0; 3],
+    };
+
     /// Values `v` at a lit pixel, with the `1/2` of their rounding: each
     /// integer part in `0..=MAX` (module docs), below `2^8`.
     #[inline(always)]
@@ -890,7 +902,7 @@ impl<C: ShadeColor> GouraudSetup<C> {
         // bytes) in a firmware with two colour types on a Cortex-M4.
         let mut setup = Self {
             linear: Linear::new(frame, values),
-            step: Carried::step::<C>([0; 3]),
+            step: Carried::ZERO,
             color: PhantomData,
         };
         setup.step = Carried::step::<C>(setup.linear.step);
