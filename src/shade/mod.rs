@@ -701,16 +701,13 @@ type Carried = PackedChannels;
 #[derive(Debug, Clone, Copy)]
 struct Channels64([i64; 3]);
 
-#[allow(dead_code)]
-impl Channels64 {
-    /// No step: what a setup holds until its step is read (`GouraudSetup`).
-    const ZERO: Self = Self([0; 3]);
-}
-
 // The signatures of `PackedChannels`'s, which needs the colour's layout; one
 // of the two is unused on each target (`Carried`).
 #[allow(clippy::extra_unused_type_parameters, dead_code)]
 impl Channels64 {
+    /// No step: what a setup holds until its step is read (`GouraudSetup`).
+    const ZERO: Self = Self([0; 3]);
+
     /// Values `v` at a lit pixel, with the `1/2` of their rounding.
     #[inline(always)]
     fn value<C: ShadeColor>(v: [i64; 3]) -> Self {
